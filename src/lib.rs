@@ -5,3 +5,7 @@
 
 pub mod scene;
 pub mod span;
+pub mod diag;
+pub mod eval;
+pub mod source;
+pub mod syntax;

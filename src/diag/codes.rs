@@ -1,0 +1,98 @@
+//! The stable diagnostic codes. Codes never change meaning once released; new problems
+//! get new codes. `docs/diagnostics.md` lists them with an example each.
+
+/// The parser expected something else here.
+pub const SYNTAX_EXPECTED: &str = "rts::syntax::expected";
+/// A `{`, `(`, `[` or `<` was never closed.
+pub const UNCLOSED_DELIMITER: &str = "rts::syntax::unclosed_delimiter";
+/// A closing `}`, `)` or `]` with no opener, or closing the wrong opener.
+pub const UNMATCHED_DELIMITER: &str = "rts::syntax::unmatched_delimiter";
+/// A string literal runs to the end of the line or file.
+pub const UNCLOSED_STRING: &str = "rts::syntax::unclosed_string";
+/// A `/*` comment is never closed.
+pub const UNCLOSED_COMMENT: &str = "rts::syntax::unclosed_comment";
+/// An `#if`, `#while`, `#for`, `#macro`, `#switch`, `#ifdef` or `#ifndef` without `#end`.
+pub const UNCLOSED_DIRECTIVE: &str = "rts::syntax::unclosed_directive";
+/// An `#end`, `#else`, `#elseif`, `#case`, `#range` or `#break` with nothing to close.
+pub const STRAY_DIRECTIVE: &str = "rts::syntax::stray_directive";
+/// A `#word` that is not a directive.
+pub const UNKNOWN_DIRECTIVE: &str = "rts::syntax::unknown_directive";
+/// The file is not valid UTF-8.
+pub const INVALID_UTF8: &str = "rts::source::invalid_utf8";
+/// A malformed escape sequence in a string.
+pub const BAD_ESCAPE: &str = "rts::syntax::bad_escape";
+/// A number literal that does not fit.
+pub const BAD_NUMBER: &str = "rts::syntax::bad_number";
+/// Brackets, blocks or expressions nested too deeply.
+pub const NESTING_TOO_DEEP: &str = "rts::limit::nesting_depth";
+
+/// An identifier that is not declared.
+pub const UNKNOWN_IDENTIFIER: &str = "rts::eval::unknown_identifier";
+/// A keyword that is not valid in this block.
+pub const UNKNOWN_PARAMETER: &str = "rts::eval::unknown_parameter";
+/// Something that does not belong where it stands in a block.
+pub const UNEXPECTED_ITEM: &str = "rts::eval::unexpected_item";
+/// A value of the wrong kind.
+pub const TYPE_MISMATCH: &str = "rts::eval::type_mismatch";
+/// A required value is missing.
+pub const MISSING_VALUE: &str = "rts::eval::missing_value";
+/// A parameter given twice in the same block.
+pub const DUPLICATE_PARAMETER: &str = "rts::eval::duplicate_parameter";
+/// Division by zero.
+pub const DIVISION_BY_ZERO: &str = "rts::eval::division_by_zero";
+/// A function called outside its domain (`sqrt(-1)`, `ln(0)`, …).
+pub const DOMAIN_ERROR: &str = "rts::eval::domain_error";
+/// An array index outside the array.
+pub const INDEX_OUT_OF_RANGE: &str = "rts::eval::index_out_of_range";
+/// An array element read before it was given a value.
+pub const UNINITIALIZED: &str = "rts::eval::uninitialized_element";
+/// `.x`, `.red`, … on a value that has no such component.
+pub const BAD_COMPONENT: &str = "rts::eval::bad_component";
+/// A size, radius or count that must be positive is not.
+pub const INVALID_SIZE: &str = "rts::eval::invalid_size";
+/// A value outside the range the parameter accepts.
+pub const OUT_OF_RANGE: &str = "rts::eval::out_of_range";
+/// A macro or function called with the wrong number of arguments.
+pub const ARITY: &str = "rts::eval::arity";
+/// A macro declares the same parameter twice.
+pub const DUPLICATE_MACRO_PARAMETER: &str = "rts::eval::duplicate_macro_parameter";
+/// An attempt to redefine a built-in name or keyword.
+pub const RESERVED_NAME: &str = "rts::eval::reserved_name";
+/// `#error` in the scene.
+pub const USER_ERROR: &str = "rts::scene::error";
+/// `#warning` in the scene.
+pub const USER_WARNING: &str = "rts::scene::warning";
+/// `#debug` output.
+pub const USER_DEBUG: &str = "rts::scene::debug";
+/// An include or image file that cannot be found or read.
+pub const FILE_NOT_FOUND: &str = "rts::io::file_not_found";
+/// A file outside the folders a scene may read.
+pub const FILE_NOT_ALLOWED: &str = "rts::io::file_not_allowed";
+/// A file that includes itself, directly or not.
+pub const INCLUDE_CYCLE: &str = "rts::eval::include_cycle";
+/// Too many loop iterations.
+pub const LOOP_LIMIT: &str = "rts::limit::loop_iterations";
+/// Macros calling macros too deeply.
+pub const RECURSION_LIMIT: &str = "rts::limit::macro_recursion";
+/// Includes nested too deeply.
+pub const INCLUDE_DEPTH: &str = "rts::limit::include_depth";
+/// An array larger than allowed.
+pub const ARRAY_SIZE: &str = "rts::limit::array_size";
+/// An image larger than allowed.
+pub const IMAGE_SIZE: &str = "rts::limit::image_size";
+/// A construct rts knows from POV-Ray but does not implement yet.
+pub const UNSUPPORTED: &str = "rts::eval::unsupported";
+/// A transform that cannot be inverted (`scale 0`, a singular matrix).
+pub const DEGENERATE_TRANSFORM: &str = "rts::eval::degenerate_transform";
+/// A camera whose vectors are degenerate.
+pub const BAD_CAMERA: &str = "rts::eval::bad_camera";
+/// A `-D NAME=VALUE` that is malformed.
+pub const BAD_DEFINE: &str = "rts::cli::bad_define";
+/// A `#declare` that is never used (warning).
+pub const UNUSED_DECLARE: &str = "rts::lint::unused_declare";
+/// A scene without `assumed_gamma` (warning, as POV-Ray 3.7 gives).
+pub const NO_GAMMA: &str = "rts::lint::assumed_gamma_missing";
+/// A scene with no light sources (warning).
+pub const NO_LIGHTS: &str = "rts::lint::no_lights";
+/// A deprecated or ignored construct (warning).
+pub const IGNORED: &str = "rts::lint::ignored";

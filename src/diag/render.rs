@@ -1,0 +1,192 @@
+//! The three renderings of a [`Diagnostic`]: a miette report for people, one line for
+//! tools (`short`), and one JSON object per line (`json`).
+
+use super::{Diagnostic, Label, Severity};
+use crate::source::SourceMap;
+use crate::span::Span;
+use miette::{GraphicalReportHandler, GraphicalTheme, LabeledSpan, NamedSource};
+use std::fmt;
+
+/// `FILE:LINE:COL: error[CODE]: MESSAGE`, plus ` (help: …)` when there is help.
+pub fn short(diag: &Diagnostic, sources: &SourceMap) -> String {
+    let (file, line, col) = position(sources, diag.span.start as usize, diag.span);
+    let mut out = format!(
+        "{file}:{line}:{col}: {}[{}]: {}",
+        diag.severity.as_str(),
+        diag.code,
+        diag.message
+    );
+    if let Some(help) = &diag.help {
+        out.push_str(&format!(" (help: {help})"));
+    }
+    out
+}
+
+fn position(sources: &SourceMap, offset: usize, span: Span) -> (String, usize, usize) {
+    let file = sources.get(span.file);
+    let (line, col) = file.line_col(offset);
+    (file.name.clone(), line, col)
+}
+
+/// The JSON object of `language.md`: severity, code, message, file, 1-based line and
+/// column (in characters) of the start and end, help, labels and notes.
+pub fn json(diag: &Diagnostic, sources: &SourceMap) -> serde_json::Value {
+    let loc = |span: Span| {
+        let file = sources.get(span.file);
+        let (line, column) = file.line_col(span.start as usize);
+        let (end_line, end_column) = file.line_col(span.end as usize);
+        (file.name.clone(), line, column, end_line, end_column)
+    };
+    let label_json = |l: &Label| {
+        let (file, line, column, end_line, end_column) = loc(l.span);
+        serde_json::json!({
+            "file": file, "line": line, "column": column,
+            "end_line": end_line, "end_column": end_column, "message": l.message,
+        })
+    };
+    let (file, line, column, end_line, end_column) = loc(diag.span);
+    let mut labels: Vec<serde_json::Value> = diag.labels.iter().map(label_json).collect();
+    labels.extend(diag.trace.iter().map(label_json));
+    let mut notes = diag.notes.clone();
+    for t in &diag.trace {
+        let (file, line, column, ..) = loc(t.span);
+        notes.push(format!("{} ({file}:{line}:{column})", t.message));
+    }
+    serde_json::json!({
+        "severity": diag.severity.as_str(),
+        "code": diag.code,
+        "message": diag.message,
+        "file": file,
+        "line": line,
+        "column": column,
+        "end_line": end_line,
+        "end_column": end_column,
+        "help": diag.help,
+        "labels": labels,
+        "notes": notes,
+    })
+}
+
+/// A graphical report (miette) with the source lines, labels, help and notes; the
+/// include and macro chain appears as related reports pointing at each step.
+pub fn human(diag: &Diagnostic, sources: &SourceMap, color: bool) -> String {
+    let theme = if color {
+        GraphicalTheme::unicode()
+    } else {
+        GraphicalTheme::unicode_nocolor()
+    };
+    let handler = GraphicalReportHandler::new_themed(theme).with_width(100);
+    let mut out = String::new();
+    let report = Report::from_diag(diag, sources);
+    if handler.render_report(&mut out, &report).is_err() {
+        return short(diag, sources);
+    }
+    out
+}
+
+/// A diagnostic in the shape miette wants.
+#[derive(Debug)]
+struct Report {
+    message: String,
+    code: Option<String>,
+    severity: miette::Severity,
+    help: Option<String>,
+    source: NamedSource<String>,
+    labels: Vec<LabeledSpan>,
+    related: Vec<Report>,
+}
+
+impl Report {
+    fn from_diag(diag: &Diagnostic, sources: &SourceMap) -> Report {
+        let file = sources.get(diag.span.file);
+        let mut labels = vec![LabeledSpan::new_primary_with_span(
+            diag.label.clone(),
+            miette_span(diag.span),
+        )];
+        let mut related = Vec::new();
+        for l in &diag.labels {
+            if l.span.file == diag.span.file {
+                labels.push(LabeledSpan::new_with_span(Some(l.message.clone()), miette_span(l.span)));
+            } else {
+                related.push(Report::note(l, sources));
+            }
+        }
+        related.extend(diag.trace.iter().map(|t| Report::note(t, sources)));
+        let mut help = diag.help.clone();
+        if !diag.notes.is_empty() {
+            let notes = diag
+                .notes
+                .iter()
+                .map(|n| format!("note: {n}"))
+                .collect::<Vec<_>>()
+                .join("\n");
+            help = Some(match help {
+                Some(h) => format!("{h}\n{notes}"),
+                None => notes,
+            });
+        }
+        Report {
+            message: diag.message.clone(),
+            code: Some(diag.code.to_string()),
+            severity: match diag.severity {
+                Severity::Error => miette::Severity::Error,
+                Severity::Warning => miette::Severity::Warning,
+                Severity::Note => miette::Severity::Advice,
+            },
+            help,
+            source: NamedSource::new(file.name.clone(), file.text.clone()),
+            labels,
+            related,
+        }
+    }
+
+    fn note(label: &Label, sources: &SourceMap) -> Report {
+        let file = sources.get(label.span.file);
+        Report {
+            message: label.message.clone(),
+            code: None,
+            severity: miette::Severity::Advice,
+            help: None,
+            source: NamedSource::new(file.name.clone(), file.text.clone()),
+            labels: vec![LabeledSpan::new_primary_with_span(None, miette_span(label.span))],
+            related: Vec::new(),
+        }
+    }
+}
+
+fn miette_span(span: Span) -> miette::SourceSpan {
+    (span.start as usize, span.len()).into()
+}
+
+impl fmt::Display for Report {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for Report {}
+
+impl miette::Diagnostic for Report {
+    fn code<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
+        self.code.as_ref().map(|c| Box::new(c) as Box<dyn fmt::Display>)
+    }
+    fn severity(&self) -> Option<miette::Severity> {
+        Some(self.severity)
+    }
+    fn help<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
+        self.help.as_ref().map(|h| Box::new(h) as Box<dyn fmt::Display>)
+    }
+    fn source_code(&self) -> Option<&dyn miette::SourceCode> {
+        Some(&self.source)
+    }
+    fn labels(&self) -> Option<Box<dyn Iterator<Item = LabeledSpan> + '_>> {
+        Some(Box::new(self.labels.iter().cloned()))
+    }
+    fn related<'a>(&'a self) -> Option<Box<dyn Iterator<Item = &'a dyn miette::Diagnostic> + 'a>> {
+        if self.related.is_empty() {
+            None
+        } else {
+            Some(Box::new(self.related.iter().map(|r| r as &dyn miette::Diagnostic)))
+        }
+    }
+}

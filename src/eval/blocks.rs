@@ -1,0 +1,82 @@
+//! Dispatch from a block's keyword to the code that evaluates it.
+
+use super::cursor::Cursor;
+use super::value::Value;
+use super::{Evaluator, R};
+use crate::diag::{codes, Diagnostic};
+use crate::syntax::ast::Block;
+
+/// Blocks this release evaluates.
+const BLOCKS: &[&str] = &[
+    "sphere", "plane", "box", "triangle", "union", "object", "texture", "pigment", "finish", "reflection",
+    "camera", "light_source", "transform", "global_settings", "background",
+];
+
+/// POV-Ray blocks that a later release implements.
+const LATER_BLOCKS: &[&str] = &[
+    "cylinder", "cone", "torus", "disc", "smooth_triangle", "polygon", "mesh", "mesh2", "polyhedron", "merge",
+    "intersection", "difference", "blob", "height_field", "isosurface", "julia_fractal", "lathe", "prism", "sor",
+    "superellipsoid", "text", "sphere_sweep", "bicubic_patch", "quadric", "normal", "interior", "material",
+    "color_map", "colour_map", "pigment_map", "normal_map", "texture_map", "sky_sphere", "fog", "media",
+    "photons", "radiosity", "spline", "light_group", "image_map", "area_light", "bounded_by", "clipped_by",
+];
+
+/// Whether `k` opens a block (`k { … }`).
+pub(crate) fn is_block_keyword(k: &str) -> bool {
+    BLOCKS.contains(&k) || LATER_BLOCKS.contains(&k)
+}
+
+impl Evaluator<'_> {
+    /// Evaluates a block; `None` for blocks that only have effects (`global_settings`).
+    pub(crate) fn block(&mut self, b: &Block) -> R<Option<Value>> {
+        let kw = b.keyword.name;
+        if !BLOCKS.contains(&kw) {
+            let d = if LATER_BLOCKS.contains(&kw) {
+                Diagnostic::error(codes::UNSUPPORTED, b.keyword.span, format!("`{kw}` is not implemented in rts yet"))
+                    .with_label("POV-Ray feature not yet supported")
+                    .with_help("see docs/language.md for what this release supports")
+            } else {
+                Diagnostic::error(codes::UNEXPECTED_ITEM, b.keyword.span, format!("`{kw}` does not take a `{{ }}` block"))
+                    .with_help(format!("write `{kw}` followed by its value, without braces"))
+            };
+            return Err(d.into());
+        }
+        let mut toks = Vec::new();
+        self.expand(&b.items, &mut toks);
+        let mut c = Cursor::new(toks, kw, b.span);
+        Ok(Some(match kw {
+            "sphere" | "plane" | "box" | "triangle" | "union" | "object" => {
+                Value::Object(std::sync::Arc::new(self.object(&mut c)?))
+            }
+            "texture" => Value::Texture(std::sync::Arc::new(self.texture(&mut c)?)),
+            "pigment" => Value::Pigment(std::sync::Arc::new(self.pigment(&mut c)?)),
+            "finish" => Value::Finish(std::sync::Arc::new(self.finish(&mut c)?)),
+            "reflection" => Value::Reflection(self.reflection(&mut c)?),
+            "camera" => Value::Camera(std::sync::Arc::new(self.camera(&mut c)?)),
+            "light_source" => Value::Light(std::sync::Arc::new(self.light(&mut c)?)),
+            "transform" => Value::Transform(std::sync::Arc::new(self.transform_block(&mut c)?)),
+            "global_settings" => {
+                self.global_settings(&mut c);
+                return Ok(None);
+            }
+            _ => {
+                self.background(&mut c)?;
+                return Ok(None);
+            }
+        }))
+    }
+
+    /// Evaluates a block that must give a value (`#declare X = sphere { … }`).
+    pub(crate) fn block_value(&mut self, b: &Block) -> R<Value> {
+        match self.block(b)? {
+            Some(v) => Ok(v),
+            None => Err(Diagnostic::error(
+                codes::TYPE_MISMATCH,
+                b.span,
+                format!("`{}` has no value to declare or pass", b.keyword.name),
+            )
+            .with_help(format!("write `{} {{ … }}` at top level instead", b.keyword.name))
+            .into()),
+        }
+    }
+}

@@ -1,0 +1,346 @@
+//! The directives: `#declare`, `#if`, loops, `#macro`, `#include`, messages, `#default`.
+
+use super::cursor::{Cursor, Tok};
+use super::value::Value;
+use super::{Evaluator, Fail, R};
+use crate::diag::{codes, Diagnostic};
+use crate::span::Span;
+use crate::syntax::ast::{CaseTest, Directive, DirectiveKind, LValue, MessageKind, Rhs};
+use std::rc::Rc;
+use std::sync::Arc;
+
+impl Evaluator<'_> {
+    /// Runs one directive; block directives expand their chosen bodies into `out`.
+    pub(crate) fn directive(&mut self, d: &Directive, out: &mut Vec<Tok>) -> R<()> {
+        match &d.kind {
+            DirectiveKind::Declare { local, target, value } => {
+                let v = match value {
+                    Rhs::Block(b) => self.block_value(b),
+                    Rhs::Expr(e) => self.expr(e),
+                };
+                let v = match v {
+                    Ok(v) => v,
+                    Err(f) => {
+                        // Poison the name so its uses do not report again.
+                        if target.indices.is_empty() && !target.name.is_builtin() {
+                            self.bind(*local, target, Value::Poison, d.span)?;
+                        }
+                        return Err(f);
+                    }
+                };
+                self.bind(*local, target, v, d.span)
+            }
+            DirectiveKind::Undef { name, span } => {
+                if !self.scope.undef(*name) {
+                    self.warn(
+                        Diagnostic::warning(codes::UNKNOWN_IDENTIFIER, *span, format!("`#undef {name}`: `{name}` is not defined"))
+                            .with_help("remove the #undef, or check the name's spelling"),
+                    );
+                }
+                Ok(())
+            }
+            DirectiveKind::If { branches, otherwise } => {
+                for (cond, body) in branches {
+                    let v = self.expr(cond)?;
+                    if self.to_float(&v, cond.span)? != 0.0 {
+                        self.expand(body, out);
+                        return Ok(());
+                    }
+                }
+                if let Some(body) = otherwise {
+                    self.expand(body, out);
+                }
+                Ok(())
+            }
+            DirectiveKind::IfDef {
+                negate,
+                target,
+                then,
+                otherwise,
+            } => {
+                let defined = self.is_defined(target)?;
+                if defined != *negate {
+                    self.expand(then, out);
+                } else if let Some(body) = otherwise {
+                    self.expand(body, out);
+                }
+                Ok(())
+            }
+            DirectiveKind::Switch { value, cases, otherwise } => {
+                let v = self.expr(value)?;
+                let x = self.to_float(&v, value.span)?;
+                let mut start = None;
+                for (i, c) in cases.iter().enumerate() {
+                    let hit = match &c.test {
+                        CaseTest::Case(e) => {
+                            let cv = self.expr(e)?;
+                            (self.to_float(&cv, e.span)? - x).abs() < 1e-10
+                        }
+                        CaseTest::Range(a, b) => {
+                            let av = self.expr(a)?;
+                            let bv = self.expr(b)?;
+                            let (lo, hi) = (self.to_float(&av, a.span)?, self.to_float(&bv, b.span)?);
+                            lo <= x && x <= hi
+                        }
+                    };
+                    if hit {
+                        start = Some(i);
+                        break;
+                    }
+                }
+                match start {
+                    Some(i) => {
+                        // Without #break a clause falls through into the next, as in POV-Ray.
+                        for c in &cases[i..] {
+                            self.expand(&c.body, out);
+                            if c.breaks {
+                                break;
+                            }
+                        }
+                    }
+                    None => {
+                        if let Some(body) = otherwise {
+                            self.expand(body, out);
+                        }
+                    }
+                }
+                Ok(())
+            }
+            DirectiveKind::While { cond, body } => {
+                loop {
+                    let v = self.expr(cond)?;
+                    if self.to_float(&v, cond.span)? == 0.0 {
+                        return Ok(());
+                    }
+                    self.count_iteration(d.span)?;
+                    self.expand(body, out);
+                    if self.stopped {
+                        return Ok(());
+                    }
+                }
+            }
+            DirectiveKind::For {
+                var,
+                var_span,
+                start,
+                end,
+                step,
+                body,
+            } => {
+                let sv = self.expr(start)?;
+                let mut i = self.to_float(&sv, start.span)?;
+                let ev = self.expr(end)?;
+                let last = self.to_float(&ev, end.span)?;
+                let step = match step {
+                    Some(s) => {
+                        let v = self.expr(s)?;
+                        let st = self.to_float(&v, s.span)?;
+                        if st == 0.0 {
+                            return Err(Diagnostic::error(codes::OUT_OF_RANGE, s.span, "`#for` step of 0 would never end")
+                                .with_help("use a positive step to count up or a negative one to count down")
+                                .into());
+                        }
+                        st
+                    }
+                    None => 1.0,
+                };
+                if var.is_builtin() {
+                    return Err(self.reserved(*var_span, &var.name()));
+                }
+                let eps = 1e-9 * step.abs();
+                while (step > 0.0 && i <= last + eps) || (step < 0.0 && i >= last - eps) {
+                    self.count_iteration(d.span)?;
+                    self.scope.local(*var, Value::Float(i), *var_span);
+                    self.expand(body, out);
+                    if self.stopped {
+                        return Ok(());
+                    }
+                    // The body may change the loop variable, as in POV-Ray.
+                    i = match self.scope.get(*var).map(|b| &b.value) {
+                        Some(Value::Float(f)) => *f,
+                        _ => i,
+                    } + step;
+                }
+                Ok(())
+            }
+            DirectiveKind::Macro(m) => {
+                if m.name.is_builtin() {
+                    return Err(self.reserved(m.name_span, &m.name.name()));
+                }
+                for (i, p) in m.params.iter().enumerate() {
+                    if let Some(first) = m.params[..i].iter().find(|q| q.name == p.name) {
+                        return Err(Diagnostic::error(
+                            codes::DUPLICATE_MACRO_PARAMETER,
+                            p.span,
+                            format!("macro `{}` has two parameters named `{}`", m.name, p.name),
+                        )
+                        .with_secondary(first.span, "first one here")
+                        .with_help("rename one of them")
+                        .into());
+                    }
+                    if p.name.is_builtin() {
+                        return Err(self.reserved(p.span, &p.name.name()));
+                    }
+                }
+                self.scope.declare(m.name, Value::Macro(m.clone()), m.name_span);
+                Ok(())
+            }
+            DirectiveKind::Include(e) => {
+                let v = self.expr(e)?;
+                let name = self.to_str(&v, e.span)?;
+                self.include(&name, e.span, d.span, out)
+            }
+            DirectiveKind::Message(kind, e) => {
+                let v = self.expr(e)?;
+                let text = self.to_str(&v, e.span)?;
+                let text = text.trim_end_matches('\n').to_string();
+                match kind {
+                    MessageKind::Debug => self.warn(Diagnostic::note(codes::USER_DEBUG, d.span, text)),
+                    MessageKind::Warning => self.warn(Diagnostic::warning(codes::USER_WARNING, d.span, text)),
+                    MessageKind::Error => {
+                        self.stopped = true;
+                        return Err(Diagnostic::error(codes::USER_ERROR, d.span, text)
+                            .with_label("#error in the scene")
+                            .into());
+                    }
+                }
+                Ok(())
+            }
+            DirectiveKind::Default(items) => {
+                let mut toks = Vec::new();
+                self.expand(items, &mut toks);
+                let mut c = Cursor::new(toks, "#default", d.span);
+                while let Some(t) = c.next() {
+                    let mut tex = (*self.default_texture).clone();
+                    match t {
+                        Tok::Block(_, Value::Texture(t), _) => tex = (*t).clone(),
+                        Tok::Block(_, Value::Pigment(p), _) => tex.pigment = (*p).clone(),
+                        Tok::Block(_, Value::Finish(f), _) => tex.finish = *f,
+                        other => {
+                            let e = self.unexpected(&c, &other, &["texture", "pigment", "finish"]);
+                            self.report(e);
+                            continue;
+                        }
+                    }
+                    self.default_texture = Arc::new(tex);
+                }
+                Ok(())
+            }
+            DirectiveKind::Version(e) => {
+                let v = self.expr(e)?;
+                let ver = self.to_float(&v, e.span)?;
+                if ver > 3.8 {
+                    self.warn(
+                        Diagnostic::warning(codes::IGNORED, e.span, format!("#version {ver}: rts follows POV-Ray 3.7"))
+                            .with_help("write `#version 3.7;`"),
+                    );
+                }
+                Ok(())
+            }
+        }
+    }
+
+    fn count_iteration(&mut self, span: Span) -> R<()> {
+        self.loop_iterations += 1;
+        if self.loop_iterations > self.options.max_loop_iterations {
+            self.stopped = true;
+            return Err(Diagnostic::error(
+                codes::LOOP_LIMIT,
+                span,
+                format!("more than {} loop iterations", self.options.max_loop_iterations),
+            )
+            .with_label("this loop was running when the limit was reached")
+            .with_help("check that the loop's condition becomes false (e.g. `#declare I = I + 1;` in the body), or raise the limit with --max-loop-iterations")
+            .into());
+        }
+        Ok(())
+    }
+
+    pub(crate) fn reserved(&self, span: Span, name: &str) -> Fail {
+        Diagnostic::error(codes::RESERVED_NAME, span, format!("`{name}` is a built-in name and cannot be redefined"))
+            .with_help("choose another name; a capital first letter never clashes with built-ins (e.g. `My_Value`)")
+            .into()
+    }
+
+    fn bind(&mut self, local: bool, target: &LValue, v: Value, span: Span) -> R<()> {
+        if target.name.is_builtin() {
+            return Err(self.reserved(target.name_span, &target.name.name()));
+        }
+        if target.indices.is_empty() {
+            if local {
+                self.scope.local(target.name, v, span);
+            } else {
+                self.scope.declare(target.name, v, span);
+            }
+            return Ok(());
+        }
+        let mut idx = Vec::new();
+        for e in &target.indices {
+            let iv = self.expr(e)?;
+            idx.push((self.to_float(&iv, e.span)?, e.span));
+        }
+        let unknown = self.unknown_identifier(target.name, target.name_span);
+        let Some(binding) = self.scope.get_mut(target.name) else {
+            return Err(unknown.into());
+        };
+        let Value::Array(arr) = &mut binding.value else {
+            let kind = binding.value.kind();
+            return Err(Diagnostic::error(
+                codes::TYPE_MISMATCH,
+                target.name_span,
+                format!("`{}` is {kind}, not an array", target.name),
+            )
+            .into());
+        };
+        let arr = Rc::make_mut(arr);
+        if idx.len() != arr.dims.len() {
+            return Err(Diagnostic::error(
+                codes::INDEX_OUT_OF_RANGE,
+                target.name_span,
+                format!("`{}` has {} dimension(s) but {} indices were given", target.name, arr.dims.len(), idx.len()),
+            )
+            .into());
+        }
+        let mut flat = 0;
+        for ((i, s), dim) in idx.iter().zip(arr.dims.clone()) {
+            if *i < 0.0 || *i >= dim as f64 {
+                return Err(Diagnostic::error(
+                    codes::INDEX_OUT_OF_RANGE,
+                    *s,
+                    format!("index {i} is outside the array (valid: 0 to {})", dim as i64 - 1),
+                )
+                .with_help("array indices start at 0")
+                .into());
+            }
+            flat = flat * dim + *i as usize;
+        }
+        arr.elems[flat] = Some(v);
+        Ok(())
+    }
+
+    fn is_defined(&mut self, target: &LValue) -> R<bool> {
+        if target.name.is_builtin() {
+            return Ok(true);
+        }
+        let Some(b) = self.scope.get(target.name) else {
+            return Ok(false);
+        };
+        if target.indices.is_empty() {
+            return Ok(true);
+        }
+        let Value::Array(arr) = b.value.clone() else {
+            return Ok(false);
+        };
+        let mut flat = 0;
+        for (e, dim) in target.indices.iter().zip(arr.dims.iter()) {
+            let v = self.expr(e)?;
+            let i = self.to_float(&v, e.span)?;
+            if i < 0.0 || i >= *dim as f64 {
+                return Ok(false);
+            }
+            flat = flat * dim + i as usize;
+        }
+        Ok(arr.elems.get(flat).is_some_and(Option::is_some))
+    }
+}
+

@@ -1,0 +1,171 @@
+//! `#include`: finding files (the including file's folder, then `-I` folders, then the
+//! built-in library), the read sandbox, cycles and depth.
+
+use super::cursor::Tok;
+use super::{Evaluator, R};
+use crate::diag::{codes, did_you_mean, Diagnostic, Label};
+use crate::source::SourceMap;
+use crate::span::{FileId, Span};
+use std::path::{Path, PathBuf};
+
+/// The built-in include files: name and text.
+pub const STDLIB: &[(&str, &str)] = &[("colors.inc", include_str!("../stdlib/colors.inc"))];
+
+/// Why a source file could not be loaded.
+#[derive(Debug)]
+pub enum LoadError {
+    /// The file could not be read.
+    Io(std::io::Error),
+    /// The file is not UTF-8; it was added to the map (lossily) so the diagnostic can
+    /// show it, and this is the ready diagnostic.
+    Utf8(Box<Diagnostic>),
+}
+
+/// Reads a file into the source map, checking that it is UTF-8.
+pub fn load_file(sources: &mut SourceMap, path: &Path, name: String) -> Result<FileId, LoadError> {
+    let bytes = std::fs::read(path).map_err(LoadError::Io)?;
+    match String::from_utf8(bytes) {
+        Ok(text) => Ok(sources.add(name, Some(path.to_path_buf()), text)),
+        Err(e) => {
+            let offset = e.utf8_error().valid_up_to();
+            let text = String::from_utf8_lossy(e.as_bytes()).into_owned();
+            // Map the byte offset into the lossy text (same up to the first bad byte).
+            let id = sources.add(name, Some(path.to_path_buf()), text);
+            let d = Diagnostic::error(
+                codes::INVALID_UTF8,
+                Span::new(id, offset, offset + 1),
+                format!("the file is not valid UTF-8 (first bad byte at offset {offset})"),
+            )
+            .with_label("invalid byte here")
+            .with_help("save the file as UTF-8");
+            Err(LoadError::Utf8(Box::new(d)))
+        }
+    }
+}
+
+impl Evaluator<'_> {
+    /// Runs `#include "name"` written at `span` (the directive at `dspan`).
+    pub(crate) fn include(&mut self, name: &str, span: Span, dspan: Span, out: &mut Vec<Tok>) -> R<()> {
+        if self.include_stack.len() > self.options.max_include_depth {
+            self.stopped = true;
+            return Err(Diagnostic::error(
+                codes::INCLUDE_DEPTH,
+                span,
+                format!("includes nested more than {} deep", self.options.max_include_depth),
+            )
+            .into());
+        }
+        let id = self.resolve(name, span)?;
+        if let Some(pos) = self.include_stack.iter().position(|f| *f == id) {
+            let chain: Vec<String> = self.include_stack[pos..]
+                .iter()
+                .map(|f| self.sources.get(*f).name.clone())
+                .chain(std::iter::once(self.sources.get(id).name.clone()))
+                .collect();
+            return Err(Diagnostic::error(codes::INCLUDE_CYCLE, span, format!("`{name}` includes itself"))
+                .with_label("this include closes a cycle")
+                .with_note(format!("the cycle: {}", chain.join(" → ")))
+                .with_help("guard the file with `#ifndef (My_File_Inc) #declare My_File_Inc = 1; … #end`, or remove the include")
+                .into());
+        }
+        let text = self.sources.get(id).text.clone();
+        let (file, diags) = crate::syntax::parse(&text, id);
+        let had_errors = crate::diag::has_errors(&diags);
+        self.trace.push(Label {
+            span: dspan,
+            message: format!("in `{}` included from here", self.sources.get(id).name),
+        });
+        for d in diags {
+            self.report(d.into());
+        }
+        if !had_errors {
+            self.include_stack.push(id);
+            self.scope.push();
+            self.expand(&file.items, out);
+            self.scope.pop();
+            self.include_stack.pop();
+        }
+        self.trace.pop();
+        Ok(())
+    }
+
+    /// Finds and loads an include file.
+    fn resolve(&mut self, name: &str, span: Span) -> R<FileId> {
+        let here = self.include_stack.last().copied().unwrap_or(FileId(0));
+        let mut dirs: Vec<PathBuf> = Vec::new();
+        if let Some(d) = self.sources.get(here).dir() {
+            dirs.push(d.to_path_buf());
+        } else if let Some(d) = &self.scene_dir {
+            dirs.push(d.clone());
+        }
+        dirs.extend(self.options.access.include_dirs.iter().cloned());
+        let mut tried = Vec::new();
+        for dir in &dirs {
+            let path = dir.join(name);
+            tried.push(path.display().to_string());
+            if !path.is_file() {
+                continue;
+            }
+            let canon = path.canonicalize().unwrap_or(path.clone());
+            if !self.options.access.permits(&canon, self.scene_dir.as_deref()) {
+                return Err(Diagnostic::error(
+                    codes::FILE_NOT_ALLOWED,
+                    span,
+                    format!("`{}` is outside the folders this scene may read", canon.display()),
+                )
+                .with_help("scenes read only from their own folder, -I folders and the built-in library; allow more with --allow-path DIR")
+                .into());
+            }
+            if let Some(id) = self.sources.find_path(&canon) {
+                return Ok(id);
+            }
+            return match load_file(self.sources, &canon, path.display().to_string()) {
+                Ok(id) => Ok(id),
+                Err(LoadError::Utf8(d)) => Err((*d).into()),
+                Err(LoadError::Io(e)) => Err(Diagnostic::error(
+                    codes::FILE_NOT_FOUND,
+                    span,
+                    format!("cannot read `{}`: {e}", path.display()),
+                )
+                .into()),
+            };
+        }
+        if let Some((lib, text)) = STDLIB.iter().find(|(n, _)| *n == name) {
+            let path = PathBuf::from(format!("<stdlib>/{lib}"));
+            if let Some(id) = self.sources.find_path(&path) {
+                return Ok(id);
+            }
+            return Ok(self.sources.add(format!("<stdlib>/{lib}"), Some(path), (*text).to_string()));
+        }
+        let mut known: Vec<String> = STDLIB.iter().map(|(n, _)| n.to_string()).collect();
+        for dir in &dirs {
+            if let Ok(rd) = std::fs::read_dir(dir) {
+                known.extend(rd.flatten().map(|e| e.file_name().to_string_lossy().into_owned()));
+            }
+        }
+        let mut d = Diagnostic::error(codes::FILE_NOT_FOUND, span, format!("include file `{name}` not found"))
+            .with_label("no such file")
+            .with_note(format!("tried: {}", tried.join(", ")))
+            .with_note(format!(
+                "search folders: the including file's folder, then -I folders ({}), then the built-in library ({})",
+                if self.options.access.include_dirs.is_empty() {
+                    "none given".to_string()
+                } else {
+                    self.options
+                        .access
+                        .include_dirs
+                        .iter()
+                        .map(|p| p.display().to_string())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                },
+                STDLIB.iter().map(|(n, _)| *n).collect::<Vec<_>>().join(", ")
+            ));
+        if let Some(s) = did_you_mean(name, known.iter().map(String::as_str)) {
+            d = d.with_help(format!("did you mean `{s}`?"));
+        } else {
+            d = d.with_help("check the file name, or add its folder with -I DIR");
+        }
+        Err(d.into())
+    }
+}

@@ -1,0 +1,288 @@
+//! Expanding items into evaluated [`Tok`]s, placing them in the scene, and macros.
+
+use super::cursor::Tok;
+use super::value::Value;
+use super::{builtins, Evaluator, Fail, R};
+use crate::diag::{codes, did_you_mean, Diagnostic, Label};
+use crate::span::Span;
+use crate::syntax::ast::{Arg, ExprKind, Item, MacroDef};
+use crate::syntax::Sym;
+use std::rc::Rc;
+use std::sync::Arc;
+
+impl Evaluator<'_> {
+    /// Runs top-level items, placing what they produce in the scene.
+    pub(crate) fn run_top(&mut self, items: &[Item]) {
+        let mut toks = Vec::new();
+        for item in items {
+            if self.stopped {
+                return;
+            }
+            self.expand_item(item, &mut toks);
+            for t in toks.drain(..) {
+                self.place(t);
+            }
+        }
+    }
+
+    /// Expands items into `out`, running directives as they come.
+    pub(crate) fn expand(&mut self, items: &[Item], out: &mut Vec<Tok>) {
+        for item in items {
+            if self.stopped {
+                return;
+            }
+            self.expand_item(item, out);
+        }
+    }
+
+    fn expand_item(&mut self, item: &Item, out: &mut Vec<Tok>) {
+        match item {
+            Item::Directive(d) => {
+                if let Err(f) = self.directive(d, out) {
+                    self.report(f);
+                }
+            }
+            Item::Block(b) => match self.block(b) {
+                Ok(Some(v)) => out.push(Tok::Block(b.keyword.name, v, b.span)),
+                Ok(None) => {}
+                Err(f) => {
+                    self.report(f);
+                    out.push(Tok::Block(b.keyword.name, Value::Poison, b.span));
+                }
+            },
+            Item::Keyword(k) => out.push(Tok::Kw(k.name, k.span)),
+            Item::Bracket(b) => {
+                let mut inner = Vec::new();
+                self.expand(&b.items, &mut inner);
+                out.push(Tok::Bracket(inner, b.span));
+            }
+            Item::Comma(s) => out.push(Tok::Comma(*s)),
+            Item::Semicolon(s) => out.push(Tok::Semi(*s)),
+            Item::Expr(e) => {
+                if let ExprKind::Call { name, args, .. } = &e.kind {
+                    if let Some(m) = self.lookup_macro(*name) {
+                        if let Err(f) = self.call_macro(&m, args, e.span, out) {
+                            self.report(f);
+                            out.push(Tok::Val(Value::Poison, e.span));
+                        }
+                        return;
+                    }
+                }
+                match self.expr(e) {
+                    Ok(v) => out.push(Tok::Val(v, e.span)),
+                    Err(f) => {
+                        self.report(f);
+                        out.push(Tok::Val(Value::Poison, e.span));
+                    }
+                }
+            }
+        }
+    }
+
+    fn lookup_macro(&self, name: Sym) -> Option<Rc<MacroDef>> {
+        match self.scope.get(name).map(|b| &b.value) {
+            Some(Value::Macro(m)) => Some(m.clone()),
+            _ => None,
+        }
+    }
+
+    /// Puts what a top-level item produced into the scene.
+    fn place(&mut self, tok: Tok) {
+        let fail: Fail = match tok {
+            Tok::Block(_, Value::Object(o), _) => {
+                let mut o = Arc::try_unwrap(o).unwrap_or_else(|a| (*a).clone());
+                if o.texture.is_none() {
+                    o.texture = Some(self.default_texture.clone());
+                }
+                self.scene.objects.push(o);
+                return;
+            }
+            Tok::Block(_, Value::Light(l), _) => {
+                self.scene.lights.push((*l).clone());
+                return;
+            }
+            Tok::Block(_, Value::Camera(c), span) => {
+                if let Some(prev) = self.camera_seen {
+                    self.warn(
+                        Diagnostic::warning(codes::DUPLICATE_PARAMETER, span, "a second camera replaces the first")
+                            .with_secondary(prev, "first camera")
+                            .with_help("keep one camera, or choose between them with #if"),
+                    );
+                }
+                match self.resolve_camera(&c, span) {
+                    Ok(cam) => self.scene.camera = cam,
+                    Err(f) => self.report(f),
+                }
+                self.camera_seen = Some(span);
+                return;
+            }
+            Tok::Block(_, Value::Poison, _) | Tok::Val(Value::Poison, _) | Tok::Semi(_) => return,
+            Tok::Block(k, v, span) => Diagnostic::error(
+                codes::UNEXPECTED_ITEM,
+                span,
+                format!("a `{k}` block cannot stand alone at top level"),
+            )
+            .with_help(format!("use it inside an object, or give it a name: `#declare My_Thing = {k} {{ … }}` ({})", v.kind()))
+            .into(),
+            Tok::Val(v, span) => {
+                let help = match &v {
+                    Value::Object(_) => "to place a declared object write `object { Name }`".to_string(),
+                    _ => "at top level only objects, lights, the camera and directives may stand".to_string(),
+                };
+                Diagnostic::error(codes::UNEXPECTED_ITEM, span, format!("{} cannot stand alone at top level", v.kind()))
+                    .with_help(help)
+                    .into()
+            }
+            Tok::Kw(k, span) => {
+                let d = Diagnostic::error(codes::UNEXPECTED_ITEM, span, format!("`{k}` cannot stand at top level"))
+                    .with_label("not inside a block");
+                let d = if super::blocks::is_block_keyword(k) {
+                    d.with_help(format!("`{k}` needs a block: `{k} {{ … }}`"))
+                } else {
+                    d.with_help(format!("`{k}` belongs inside a block such as an object, texture or finish"))
+                };
+                d.into()
+            }
+            Tok::Comma(span) => Diagnostic::error(codes::UNEXPECTED_ITEM, span, "unexpected `,` at top level").into(),
+            Tok::Bracket(_, span) => Diagnostic::error(codes::UNEXPECTED_ITEM, span, "unexpected `[ … ]` at top level").into(),
+        };
+        self.report(fail);
+    }
+
+    /// Expands a macro call into `out`.
+    pub(crate) fn call_macro(&mut self, m: &Rc<MacroDef>, args: &[Arg], call: Span, out: &mut Vec<Tok>) -> R<()> {
+        let required = m.params.iter().filter(|p| !p.optional).count();
+        if args.len() < required || args.len() > m.params.len() {
+            let want = if required == m.params.len() {
+                format!("{required}")
+            } else {
+                format!("{required} to {}", m.params.len())
+            };
+            return Err(Diagnostic::error(
+                codes::ARITY,
+                call,
+                format!("macro `{}` takes {want} argument{}, found {}", m.name, if want == "1" { "" } else { "s" }, args.len()),
+            )
+            .with_secondary(m.name_span, "macro defined here")
+            .with_help(format!(
+                "call it as {}({})",
+                m.name,
+                m.params
+                    .iter()
+                    .map(|p| if p.optional { format!("optional {}", p.name) } else { p.name.to_string() })
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ))
+            .into());
+        }
+        if self.macro_depth >= self.options.max_macro_depth {
+            self.stopped = true;
+            return Err(Diagnostic::error(
+                codes::RECURSION_LIMIT,
+                call,
+                format!("macros nested more than {} deep", self.options.max_macro_depth),
+            )
+            .with_help("check that a recursive macro has a condition that ends it, or raise --max-macro-depth")
+            .into());
+        }
+        let mut values = Vec::with_capacity(args.len());
+        for a in args {
+            values.push(match a {
+                Arg::Expr(e) => self.expr(e)?,
+                Arg::Block(b) => self.block_value(b)?,
+            });
+        }
+        self.scope.push();
+        for (p, (v, a)) in m.params.iter().zip(values.into_iter().zip(args)) {
+            self.scope.local(p.name, v, a.span());
+        }
+        self.macro_depth += 1;
+        self.trace.push(Label {
+            span: call,
+            message: format!("in macro `{}` called here", m.name),
+        });
+        self.expand(&m.body, out);
+        self.trace.pop();
+        self.macro_depth -= 1;
+        self.scope.pop();
+        Ok(())
+    }
+
+    /// A call in an expression: a built-in function or a macro that yields one value.
+    pub(crate) fn call_value(&mut self, name: Sym, name_span: Span, args: &[Arg], span: Span) -> R<Value> {
+        if name.is_builtin() && builtins::is_function(name.0 as usize) {
+            if &*name.name() == "defined" {
+                return self.defined(args, span);
+            }
+            let mut vals = Vec::with_capacity(args.len());
+            for a in args {
+                match a {
+                    Arg::Expr(e) => vals.push((self.expr(e)?, e.span)),
+                    Arg::Block(b) => vals.push((self.block_value(b)?, b.span)),
+                }
+            }
+            return self.call_builtin(name.0 as usize, span, &vals);
+        }
+        if let Some(m) = self.lookup_macro(name) {
+            let mut out = Vec::new();
+            self.call_macro(&m, args, span, &mut out)?;
+            let mut vals = out.into_iter().filter(|t| !matches!(t, Tok::Semi(_)));
+            return match (vals.next(), vals.next()) {
+                (Some(Tok::Val(v, _) | Tok::Block(_, v, _)), None) => match v {
+                    Value::Poison => Err(Fail::silent()),
+                    v => Ok(v),
+                },
+                (None, _) => Err(Diagnostic::error(codes::TYPE_MISMATCH, span, format!("macro `{name}` produced no value"))
+                    .with_help("a macro used in an expression must end with the value it gives")
+                    .into()),
+                (Some(t), _) => Err(Diagnostic::error(
+                    codes::TYPE_MISMATCH,
+                    span,
+                    format!("macro `{name}` produced several items where one value is needed"),
+                )
+                .with_label(format!("first item: {}", t.describe()))
+                .into()),
+            };
+        }
+        match self.scope.get(name).map(|b| &b.value) {
+            Some(Value::Poison) => Err(Fail::silent()),
+            Some(v) => Err(Diagnostic::error(
+                codes::TYPE_MISMATCH,
+                name_span,
+                format!("`{name}` is {}, not a macro or function", v.kind()),
+            )
+            .into()),
+            None => {
+                let names: Vec<Arc<str>> = self
+                    .scope
+                    .names()
+                    .into_iter()
+                    .filter(|s| matches!(self.scope.get(*s).map(|b| &b.value), Some(Value::Macro(_))))
+                    .map(Sym::name)
+                    .collect();
+                let cands = names
+                    .iter()
+                    .map(|s| &**s)
+                    .chain(builtins::BUILTIN_NAMES[builtins::CONSTANT_COUNT..].iter().copied());
+                let text = name.name();
+                Err(Diagnostic::error(codes::UNKNOWN_IDENTIFIER, name_span, format!("unknown macro or function `{text}`"))
+                    .with_label("not defined")
+                    .with_help(match did_you_mean(&text, cands) {
+                        Some(s) => format!("did you mean `{s}`?"),
+                        None => format!("define it with `#macro {text}(…) … #end` before calling it"),
+                    })
+                    .into())
+            }
+        }
+    }
+
+    fn defined(&mut self, args: &[Arg], span: Span) -> R<Value> {
+        match args {
+            [Arg::Expr(e)] => match &e.kind {
+                ExprKind::Ident(n) => Ok(Value::Float(f64::from(u8::from(n.is_builtin() || self.scope.get(*n).is_some())))),
+                _ => Err(Diagnostic::error(codes::TYPE_MISMATCH, e.span, "`defined` needs a name").into()),
+            },
+            _ => Err(Diagnostic::error(codes::ARITY, span, "`defined` takes one name").into()),
+        }
+    }
+}

@@ -1,0 +1,214 @@
+//! Stage 2: syntax tree to scene description.
+//!
+//! [`eval`] runs the directives, expands macros and includes, evaluates expressions
+//! and turns blocks into [`crate::scene`] data. Errors are collected, not thrown: a
+//! failing statement is reported and evaluation goes on with the next one, and values
+//! whose evaluation failed are [`Value::Poison`] so they do not cause further reports.
+
+mod blocks;
+mod builtins;
+mod camera;
+mod cursor;
+mod directives;
+mod exprs;
+mod include;
+mod items;
+mod materials;
+mod objects;
+mod scope;
+pub mod value;
+
+pub use builtins::BUILTIN_NAMES;
+pub use include::{load_file, LoadError, STDLIB};
+pub use value::Value;
+
+use crate::diag::{codes, Diagnostic, Label};
+use crate::scene::{Scene, Texture};
+use crate::source::{FileAccess, SourceMap};
+use crate::span::{FileId, Span};
+use crate::syntax::ast;
+use std::path::PathBuf;
+use std::sync::Arc;
+
+/// Settings that come from the command line rather than the scene.
+#[derive(Clone, Debug)]
+pub struct EvalOptions {
+    /// Where includes may be found and which files may be read.
+    pub access: FileAccess,
+    /// `-D NAME=VALUE` definitions, evaluated as expressions before the scene.
+    pub defines: Vec<(String, String)>,
+    /// `clock`.
+    pub clock: f64,
+    /// `clock_delta`.
+    pub clock_delta: f64,
+    /// `clock_on`: whether an animation is being rendered.
+    pub clock_on: bool,
+    /// `frame_number`.
+    pub frame_number: f64,
+    /// `initial_frame`.
+    pub initial_frame: f64,
+    /// `final_frame`.
+    pub final_frame: f64,
+    /// `image_width`.
+    pub image_width: f64,
+    /// `image_height`.
+    pub image_height: f64,
+    /// Most loop iterations (all loops together) before evaluation stops.
+    pub max_loop_iterations: u64,
+    /// Deepest macro recursion.
+    pub max_macro_depth: usize,
+    /// Deepest `#include` nesting.
+    pub max_include_depth: usize,
+    /// Most elements in one array.
+    pub max_array_size: usize,
+}
+
+impl Default for EvalOptions {
+    fn default() -> Self {
+        EvalOptions {
+            access: FileAccess::default(),
+            defines: Vec::new(),
+            clock: 0.0,
+            clock_delta: 0.0,
+            clock_on: false,
+            frame_number: 0.0,
+            initial_frame: 1.0,
+            final_frame: 1.0,
+            image_width: 800.0,
+            image_height: 600.0,
+            max_loop_iterations: 20_000_000,
+            max_macro_depth: 1_000,
+            max_include_depth: 64,
+            max_array_size: 1 << 22,
+        }
+    }
+}
+
+/// The outcome of evaluation: the scene (complete only when no error was reported)
+/// and every diagnostic, in the order found.
+#[derive(Debug)]
+pub struct Evaluated {
+    /// The scene description.
+    pub scene: Scene,
+    /// Errors, warnings and `#debug` notes.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// Evaluates a parsed file (already added to `sources` as `file_id`).
+pub fn eval(file: &ast::File, file_id: FileId, sources: &mut SourceMap, options: &EvalOptions) -> Evaluated {
+    let scene_dir = sources.get(file_id).dir().map(PathBuf::from);
+    let mut ev = Evaluator {
+        sources,
+        options,
+        scope: scope::Scopes::new(),
+        diags: Vec::new(),
+        scene: Scene::default(),
+        camera_seen: None,
+        trace: Vec::new(),
+        default_texture: Arc::new(Texture::default()),
+        loop_iterations: 0,
+        macro_depth: 0,
+        include_stack: vec![file_id],
+        scene_dir,
+        rand_streams: Vec::new(),
+        stopped: false,
+    };
+    ev.define_command_line();
+    ev.run_top(&file.items);
+    ev.finish_scene()
+}
+
+/// A failure while evaluating: the diagnostic to report, or `None` when the cause was
+/// already reported (a poisoned value).
+#[derive(Debug)]
+pub(crate) struct Fail(Option<Box<Diagnostic>>);
+
+impl From<Diagnostic> for Fail {
+    fn from(d: Diagnostic) -> Fail {
+        Fail(Some(Box::new(d)))
+    }
+}
+
+impl Fail {
+    /// A failure that reports nothing (its cause was reported already).
+    pub(crate) fn silent() -> Fail {
+        Fail(None)
+    }
+}
+
+/// Result of evaluation steps.
+pub(crate) type R<T> = Result<T, Fail>;
+
+/// The evaluator's state for one run.
+pub(crate) struct Evaluator<'a> {
+    pub(crate) sources: &'a mut SourceMap,
+    pub(crate) options: &'a EvalOptions,
+    pub(crate) scope: scope::Scopes,
+    pub(crate) diags: Vec<Diagnostic>,
+    pub(crate) scene: Scene,
+    pub(crate) camera_seen: Option<Span>,
+    /// Include and macro-call sites on the way to the current item, outermost first.
+    pub(crate) trace: Vec<Label>,
+    pub(crate) default_texture: Arc<Texture>,
+    pub(crate) loop_iterations: u64,
+    pub(crate) macro_depth: usize,
+    pub(crate) include_stack: Vec<FileId>,
+    pub(crate) scene_dir: Option<PathBuf>,
+    pub(crate) rand_streams: Vec<u64>,
+    /// Set by `#error` and limits: evaluation stops.
+    pub(crate) stopped: bool,
+}
+
+impl Evaluator<'_> {
+    /// Records a failure with the current include/macro chain.
+    pub(crate) fn report(&mut self, fail: Fail) {
+        if let Some(mut d) = fail.0 {
+            d.trace.extend(self.trace.iter().rev().cloned());
+            self.diags.push(*d);
+        }
+    }
+
+    /// Records a warning or note.
+    pub(crate) fn warn(&mut self, d: Diagnostic) {
+        self.report(d.into());
+    }
+
+    fn define_command_line(&mut self) {
+        let defines = self.options.defines.clone();
+        for (name, value) in defines {
+            let text = format!("#declare {name} = {value};\n");
+            let id = self.sources.add(format!("<-D {name}={value}>"), None, text.clone());
+            let (file, diags) = crate::syntax::parse(&text, id);
+            if !diags.is_empty() {
+                let span = Span::new(id, 0, text.len().saturating_sub(1));
+                self.diags.push(
+                    Diagnostic::error(codes::BAD_DEFINE, span, format!("cannot use `-D {name}={value}`"))
+                        .with_help("write -D NAME=VALUE with a name and an expression, e.g. -D Radius=2 or -D Name=\\\"text\\\""),
+                );
+                continue;
+            }
+            self.run_top(&file.items);
+        }
+    }
+
+    fn finish_scene(mut self) -> Evaluated {
+        if !crate::diag::has_errors(&self.diags) {
+            if self.scene.global.assumed_gamma.is_none() {
+                self.diags.push(
+                    Diagnostic::warning(codes::NO_GAMMA, Span::new(self.include_stack[0], 0, 0), "the scene does not set assumed_gamma")
+                        .with_help("add `global_settings { assumed_gamma 1.0 }` (POV-Ray 3.7 assumes 1.0 and warns too)"),
+                );
+            }
+            if self.scene.lights.is_empty() && !self.scene.objects.is_empty() {
+                self.diags.push(
+                    Diagnostic::warning(codes::NO_LIGHTS, Span::new(self.include_stack[0], 0, 0), "the scene has no light sources")
+                        .with_help("add `light_source { <10, 10, -10> color rgb 1 }`; only ambient light will show"),
+                );
+            }
+        }
+        Evaluated {
+            scene: self.scene,
+            diagnostics: self.diags,
+        }
+    }
+}

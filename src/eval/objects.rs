@@ -1,0 +1,317 @@
+//! Objects: `sphere`, `plane`, `box`, `triangle`, `union`, `object`, and their
+//! modifiers; transforms shared by all blocks.
+
+use super::cursor::{Cursor, Tok};
+use super::value::Value;
+use super::{Evaluator, Fail, R};
+use crate::diag::{codes, Diagnostic};
+use crate::scene::{Object, ObjectFlags, Shape, Texture, Transform};
+use crate::span::Span;
+use glam::{DMat4, DVec4};
+use std::sync::Arc;
+
+/// Keywords every object accepts after its shape parameters.
+pub(crate) const OBJECT_MODIFIERS: &[&str] = &[
+    "translate", "rotate", "scale", "matrix", "transform", "texture", "pigment", "finish", "no_shadow", "no_image",
+    "no_reflection", "inverse", "hollow", "double_illuminate", "sturm",
+];
+
+/// The transform keywords.
+pub(crate) const TRANSFORMS: &[&str] = &["translate", "rotate", "scale", "matrix", "transform"];
+
+impl Evaluator<'_> {
+    /// Evaluates an object block (`c.block` says which).
+    pub(crate) fn object(&mut self, c: &mut Cursor) -> R<Object> {
+        let span = c.span;
+        let mut obj = match c.block {
+            "sphere" => {
+                let center = self.take_vec3(c, "the sphere's centre")?;
+                c.comma();
+                let (v, s) = c.value("the sphere's radius")?;
+                let radius = self.to_float(&v, s)?;
+                if radius <= 0.0 {
+                    return Err(self.bad_size(s, "sphere radius", radius));
+                }
+                new_object(Shape::Sphere { center, radius }, span)
+            }
+            "plane" => {
+                let (v, s) = c.value("the plane's normal")?;
+                let normal = self.to_vec3(&v, s)?;
+                if normal.length_squared() == 0.0 {
+                    return Err(Diagnostic::error(codes::INVALID_SIZE, s, "the plane's normal is <0, 0, 0>")
+                        .with_help("give the direction the plane faces, e.g. `plane { y, 0 }`")
+                        .into());
+                }
+                c.comma();
+                let distance = self.take_float(c, "the plane's distance from the origin")?;
+                new_object(
+                    Shape::Plane {
+                        normal: normal.normalize(),
+                        distance,
+                    },
+                    span,
+                )
+            }
+            "box" => {
+                let a = self.take_vec3(c, "the box's first corner")?;
+                c.comma();
+                let (v, s) = c.value("the box's second corner")?;
+                let b = self.to_vec3(&v, s)?;
+                let (min, max) = (a.min(b), a.max(b));
+                if (max - min).min_element() == 0.0 {
+                    self.warn(
+                        Diagnostic::warning(codes::INVALID_SIZE, s, "this box is flat: two corners share a coordinate")
+                            .with_help("a box needs corners that differ in x, y and z"),
+                    );
+                }
+                new_object(Shape::Box { min, max }, span)
+            }
+            "triangle" => {
+                let a = self.take_vec3(c, "the triangle's first corner")?;
+                c.comma();
+                let b = self.take_vec3(c, "the triangle's second corner")?;
+                c.comma();
+                let (v, s) = c.value("the triangle's third corner")?;
+                let cc = self.to_vec3(&v, s)?;
+                if (b - a).cross(cc - a).length_squared() == 0.0 {
+                    self.warn(
+                        Diagnostic::warning(codes::INVALID_SIZE, s, "this triangle has no area: its corners are in a line")
+                            .with_help("move one corner off the line through the other two"),
+                    );
+                }
+                new_object(Shape::Triangle { vertices: [a, b, cc] }, span)
+            }
+            "union" => {
+                let mut children = Vec::new();
+                while let Some(Tok::Block(_, Value::Object(_) | Value::Poison, _)) = c.peek() {
+                    if let Some(Tok::Block(_, Value::Object(o), _)) = c.next() {
+                        children.push(Arc::try_unwrap(o).unwrap_or_else(|a| (*a).clone()));
+                    }
+                }
+                let mut obj = new_object(Shape::Union { children }, span);
+                self.modifiers(&mut obj, c, true);
+                if let Shape::Union { children } = &obj.shape {
+                    if children.is_empty() {
+                        self.warn(
+                            Diagnostic::warning(codes::MISSING_VALUE, span, "this union has no objects")
+                                .with_help("put objects inside the union, e.g. `union { sphere { … } box { … } }`"),
+                        );
+                    }
+                }
+                return Ok(obj);
+            }
+            _ => {
+                // object { Name modifiers… } or object { sphere { … } modifiers… }
+                match c.next() {
+                    Some(Tok::Val(Value::Object(o), _) | Tok::Block(_, Value::Object(o), _)) => {
+                        let mut o = Arc::try_unwrap(o).unwrap_or_else(|a| (*a).clone());
+                        o.span = span;
+                        o
+                    }
+                    Some(Tok::Val(Value::Poison, _) | Tok::Block(_, Value::Poison, _)) => return Err(Fail::silent()),
+                    Some(t) => {
+                        return Err(Diagnostic::error(
+                            codes::TYPE_MISMATCH,
+                            t.span(),
+                            format!("expected an object, found {}", t.describe()),
+                        )
+                        .with_help("write `object { My_Object … }` with a #declared object, or an object block inside")
+                        .into())
+                    }
+                    None => {
+                        return Err(Diagnostic::error(codes::MISSING_VALUE, span, "`object { }` needs an object")
+                            .with_help("write `object { My_Object … }` with a #declared object")
+                            .into())
+                    }
+                }
+            }
+        };
+        self.modifiers(&mut obj, c, false);
+        Ok(obj)
+    }
+
+    fn bad_size(&self, span: Span, what: &str, v: f64) -> Fail {
+        Diagnostic::error(codes::INVALID_SIZE, span, format!("{what} must be positive, found {v}"))
+            .with_label("not positive")
+            .with_help(format!("give a {what} greater than 0"))
+            .into()
+    }
+
+    /// The modifiers after an object's parameters; errors are reported and skipped.
+    fn modifiers(&mut self, obj: &mut Object, c: &mut Cursor, is_union: bool) {
+        while let Some(tok) = c.next() {
+            if let Err(f) = self.modifier(obj, c, tok, is_union) {
+                self.report(f);
+            }
+        }
+    }
+
+    fn modifier(&mut self, obj: &mut Object, c: &mut Cursor, tok: Tok, is_union: bool) -> R<()> {
+        match tok {
+            Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => {
+                let t = self.transform_kw(kw, span, c)?;
+                apply_transform(obj, &t);
+            }
+            Tok::Block(_, Value::Transform(t), _) => apply_transform(obj, &t),
+            Tok::Block(_, Value::Texture(t), _) => obj.texture = Some(attach(obj, (*t).clone())),
+            Tok::Block(_, Value::Pigment(p), _) => {
+                let finish = match obj.texture.as_deref() {
+                    Some(t) => t.finish,
+                    None => self.default_texture.finish,
+                };
+                let tex = Texture {
+                    pigment: (*p).clone(),
+                    finish,
+                };
+                obj.texture = Some(attach(obj, tex));
+            }
+            Tok::Block(_, Value::Finish(f), _) => {
+                let mut tex = match obj.texture.as_deref() {
+                    Some(t) => t.clone(),
+                    None => {
+                        // A finish alone keeps the default pigment, in the object's frame.
+                        let t = (*self.default_texture).clone();
+                        (*attach(obj, t)).clone()
+                    }
+                };
+                tex.finish = *f;
+                obj.texture = Some(Arc::new(tex));
+            }
+            Tok::Kw("no_shadow", _) => obj.flags.no_shadow = true,
+            Tok::Kw("no_image", _) => obj.flags.no_image = true,
+            Tok::Kw("no_reflection", _) => obj.flags.no_reflection = true,
+            Tok::Kw("inverse", _) => obj.flags.inverse = !obj.flags.inverse,
+            Tok::Kw("hollow" | "double_illuminate" | "sturm", _) => {
+                // Accepted as in POV-Ray; they change nothing for the shapes of this release.
+                if c.value_next() {
+                    self.take_float(c, "on or off")?;
+                }
+            }
+            Tok::Block(_, Value::Object(_), span) if !is_union => {
+                return Err(Diagnostic::error(
+                    codes::UNEXPECTED_ITEM,
+                    span,
+                    format!("an object inside `{}`", c.block),
+                )
+                .with_help("to group objects use `union { … }`")
+                .into());
+            }
+            Tok::Block(_, Value::Object(_), span) => {
+                return Err(Diagnostic::error(codes::UNEXPECTED_ITEM, span, "objects must come before the union's modifiers")
+                    .with_help("move this object above the first transform or texture of the union")
+                    .into());
+            }
+            Tok::Kw("open", span) => {
+                return Err(Diagnostic::error(codes::UNKNOWN_PARAMETER, span, format!("`open` is not valid in `{}`", c.block))
+                    .with_help("`open` applies to cylinders and cones only")
+                    .into());
+            }
+            other => return Err(self.unexpected(c, &other, OBJECT_MODIFIERS)),
+        }
+        Ok(())
+    }
+
+    /// Evaluates one transform keyword (`translate V`, …) already taken from `c`.
+    pub(crate) fn transform_kw(&mut self, kw: &str, kw_span: Span, c: &mut Cursor) -> R<Transform> {
+        match kw {
+            "translate" => Ok(Transform::translate(self.take_vec3(c, "a vector to translate by")?)),
+            "rotate" => Ok(Transform::rotate(self.take_vec3(c, "the rotation angles <x, y, z> in degrees")?)),
+            "scale" => {
+                let (v, s) = c.value("a scale factor")?;
+                let f = self.to_vec3(&v, s)?;
+                if f.x == 0.0 || f.y == 0.0 || f.z == 0.0 {
+                    return Err(Diagnostic::error(codes::DEGENERATE_TRANSFORM, s, "scale by 0 flattens the object")
+                        .with_label("a component is 0")
+                        .with_help("use a small non-zero scale instead, or remove the object")
+                        .into());
+                }
+                Ok(Transform::scale(f))
+            }
+            "matrix" => {
+                let (v, s) = c.value("12 numbers `<…>` for the matrix")?;
+                match v {
+                    Value::Transform(t) => Ok(*t),
+                    other => Err(self.mismatch("a matrix `<m00, m01, m02, … m32>` of 12 numbers", &other, s)),
+                }
+            }
+            _ => match c.next() {
+                Some(Tok::Val(Value::Transform(t), _) | Tok::Block(_, Value::Transform(t), _)) => Ok(*t),
+                Some(Tok::Val(Value::Poison, _)) => Err(Fail::silent()),
+                Some(t) => Err(self.mismatch("a transform", &value_of(&t), t.span())),
+                None => Err(Diagnostic::error(codes::MISSING_VALUE, kw_span, "`transform` needs a transform")
+                    .with_help("write `transform { rotate … translate … }` or `transform My_Transform`")
+                    .into()),
+            },
+        }
+    }
+
+    /// `transform { translate … rotate … inverse }`.
+    pub(crate) fn transform_block(&mut self, c: &mut Cursor) -> R<Transform> {
+        let mut t = Transform::IDENTITY;
+        while let Some(tok) = c.next() {
+            let step = match tok {
+                Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => self.transform_kw(kw, span, c),
+                Tok::Val(Value::Transform(x), _) | Tok::Block(_, Value::Transform(x), _) => Ok(*x),
+                Tok::Kw("inverse", _) => {
+                    t = Transform {
+                        matrix: t.inverse,
+                        inverse: t.matrix,
+                    };
+                    continue;
+                }
+                other => Err(self.unexpected(c, &other, &["translate", "rotate", "scale", "matrix", "transform", "inverse"])),
+            };
+            match step {
+                Ok(s) => t = t.then(&s),
+                Err(f) => self.report(f),
+            }
+        }
+        Ok(t)
+    }
+}
+
+fn value_of(t: &Tok) -> Value {
+    match t {
+        Tok::Val(v, _) | Tok::Block(_, v, _) => v.clone(),
+        _ => Value::Poison,
+    }
+}
+
+fn new_object(shape: Shape, span: Span) -> Object {
+    Object {
+        shape,
+        transform: None,
+        texture: None,
+        flags: ObjectFlags::default(),
+        span,
+    }
+}
+
+/// Applies a transform to an object (its texture moves with it: textures are kept in
+/// the object's own frame).
+fn apply_transform(obj: &mut Object, t: &Transform) {
+    let current = obj.transform.as_deref().copied().unwrap_or(Transform::IDENTITY);
+    obj.transform = Some(Arc::new(current.then(t)));
+}
+
+/// Attaches a texture given now: its pattern stays where it is in the world, so in the
+/// object's frame it is `object_from_world ∘ world_from_pattern`.
+fn attach(obj: &Object, mut tex: Texture) -> Arc<Texture> {
+    if let Some(ot) = obj.transform.as_deref() {
+        let pattern = tex.pigment.transform.as_deref().copied().unwrap_or(Transform::IDENTITY);
+        let inv = Transform {
+            matrix: ot.inverse,
+            inverse: ot.matrix,
+        };
+        tex.pigment.transform = Some(Arc::new(pattern.then(&inv)));
+    }
+    Arc::new(tex)
+}
+
+/// Builds the transform POV-Ray's `matrix <12 numbers>` describes (rows of a 4×3
+/// matrix applied to row vectors); `None` when it cannot be inverted.
+pub(crate) fn matrix_from_12(m: &[f64]) -> Option<Transform> {
+    let col = |i: usize, w: f64| DVec4::new(m[3 * i], m[3 * i + 1], m[3 * i + 2], w);
+    Transform::from_matrix(DMat4::from_cols(col(0, 0.0), col(1, 0.0), col(2, 0.0), col(3, 1.0)))
+}
+

@@ -1,0 +1,77 @@
+//! Identifier scopes: the global table plus one local table per macro call and
+//! include file, searched innermost first.
+
+use super::Value;
+use crate::span::Span;
+use crate::syntax::Sym;
+use rustc_hash::FxHashMap;
+
+/// One binding: the value and where it was declared.
+#[derive(Clone, Debug)]
+pub(crate) struct Binding {
+    pub(crate) value: Value,
+    pub(crate) span: Span,
+}
+
+/// The stack of scopes; index 0 is global.
+pub(crate) struct Scopes {
+    frames: Vec<FxHashMap<Sym, Binding>>,
+}
+
+impl Scopes {
+    pub(crate) fn new() -> Scopes {
+        Scopes {
+            frames: vec![FxHashMap::default()],
+        }
+    }
+
+    /// Looks `name` up, innermost scope first.
+    pub(crate) fn get(&self, name: Sym) -> Option<&Binding> {
+        self.frames.iter().rev().find_map(|f| f.get(&name))
+    }
+
+    /// Mutable access to the innermost binding of `name`.
+    pub(crate) fn get_mut(&mut self, name: Sym) -> Option<&mut Binding> {
+        self.frames.iter_mut().rev().find_map(|f| f.get_mut(&name))
+    }
+
+    /// `#declare`: updates the innermost existing binding, else creates a global one.
+    pub(crate) fn declare(&mut self, name: Sym, value: Value, span: Span) {
+        if let Some(b) = self.get_mut(name) {
+            b.value = value;
+            b.span = span;
+        } else {
+            self.frames[0].insert(name, Binding { value, span });
+        }
+    }
+
+    /// `#local`: binds in the innermost scope.
+    pub(crate) fn local(&mut self, name: Sym, value: Value, span: Span) {
+        self.frames
+            .last_mut()
+            .expect("global scope")
+            .insert(name, Binding { value, span });
+    }
+
+    /// `#undef`: removes the innermost binding; false if there was none.
+    pub(crate) fn undef(&mut self, name: Sym) -> bool {
+        self.frames.iter_mut().rev().any(|f| f.remove(&name).is_some())
+    }
+
+    /// Opens a local scope.
+    pub(crate) fn push(&mut self) {
+        self.frames.push(FxHashMap::default());
+    }
+
+    /// Closes the innermost local scope.
+    pub(crate) fn pop(&mut self) {
+        if self.frames.len() > 1 {
+            self.frames.pop();
+        }
+    }
+
+    /// Every name visible now, for "did you mean".
+    pub(crate) fn names(&self) -> Vec<Sym> {
+        self.frames.iter().flat_map(|f| f.keys().copied()).collect()
+    }
+}

@@ -1,0 +1,163 @@
+//! Values of the language.
+
+use crate::scene::{Colour, Finish, Light, Object, Pigment, Reflection, Texture, Transform};
+use crate::syntax::ast::MacroDef;
+use glam::DVec3;
+use std::rc::Rc;
+use std::sync::Arc;
+
+/// A vector of 2 to 5 components.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Vector {
+    /// Components; those past `len` are zero.
+    pub c: [f64; 5],
+    /// How many components (2..=5).
+    pub len: u8,
+}
+
+impl Vector {
+    /// A vector from a slice of 2 to 5 components.
+    pub fn from_slice(s: &[f64]) -> Vector {
+        let mut c = [0.0; 5];
+        c[..s.len()].copy_from_slice(s);
+        Vector { c, len: s.len() as u8 }
+    }
+
+    /// A 3-vector.
+    pub fn v3(v: DVec3) -> Vector {
+        Vector::from_slice(&[v.x, v.y, v.z])
+    }
+
+    /// The first three components.
+    pub fn xyz(&self) -> DVec3 {
+        DVec3::new(self.c[0], self.c[1], self.c[2])
+    }
+
+    /// The used components.
+    pub fn as_slice(&self) -> &[f64] {
+        &self.c[..self.len as usize]
+    }
+}
+
+/// A multi-dimensional array; elements start unset.
+#[derive(Clone, Debug)]
+pub struct Array {
+    /// Size of each dimension.
+    pub dims: Vec<usize>,
+    /// Elements in row-major order.
+    pub elems: Vec<Option<Value>>,
+}
+
+/// The camera as written, before `look_at` and `angle` are resolved.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CameraSpec {
+    /// `location`.
+    pub location: DVec3,
+    /// `direction`.
+    pub direction: DVec3,
+    /// `up`.
+    pub up: DVec3,
+    /// `right`.
+    pub right: DVec3,
+    /// `sky`.
+    pub sky: DVec3,
+    /// `look_at`, if given.
+    pub look_at: Option<DVec3>,
+    /// `angle`, if given (horizontal field of view in degrees).
+    pub angle: Option<f64>,
+    /// Transforms applied after the vectors.
+    pub transform: Option<Transform>,
+}
+
+impl Default for CameraSpec {
+    fn default() -> Self {
+        CameraSpec {
+            location: DVec3::ZERO,
+            direction: DVec3::Z,
+            up: DVec3::Y,
+            right: DVec3::new(1.33, 0.0, 0.0),
+            sky: DVec3::Y,
+            look_at: None,
+            angle: None,
+            transform: None,
+        }
+    }
+}
+
+/// A value.
+#[derive(Clone, Debug)]
+pub enum Value {
+    /// A float; booleans are floats (0 is false).
+    Float(f64),
+    /// A vector of 2–5 components.
+    Vector(Vector),
+    /// A colour.
+    Colour(Colour),
+    /// A string.
+    Str(Rc<str>),
+    /// An array.
+    Array(Rc<Array>),
+    /// An object.
+    Object(Arc<Object>),
+    /// A texture.
+    Texture(Arc<Texture>),
+    /// A pigment.
+    Pigment(Arc<Pigment>),
+    /// A finish.
+    Finish(Arc<Finish>),
+    /// A camera.
+    Camera(Arc<CameraSpec>),
+    /// A light source.
+    Light(Arc<Light>),
+    /// A transform.
+    Transform(Arc<Transform>),
+    /// `reflection { … }` (only meaningful inside a finish).
+    Reflection(Reflection),
+    /// A macro.
+    Macro(Rc<MacroDef>),
+    /// The value of something whose evaluation failed (already reported); using it
+    /// fails silently so one error does not cascade.
+    Poison,
+}
+
+impl Value {
+    /// The kind of value, as named in messages ("a float", "a vector", …).
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Value::Float(_) => "a float",
+            Value::Vector(v) => match v.len {
+                2 => "a 2-vector",
+                3 => "a vector",
+                4 => "a 4-vector",
+                _ => "a 5-vector",
+            },
+            Value::Colour(_) => "a colour",
+            Value::Str(_) => "a string",
+            Value::Array(_) => "an array",
+            Value::Object(_) => "an object",
+            Value::Texture(_) => "a texture",
+            Value::Pigment(_) => "a pigment",
+            Value::Finish(_) => "a finish",
+            Value::Camera(_) => "a camera",
+            Value::Light(_) => "a light source",
+            Value::Transform(_) => "a transform",
+            Value::Reflection(_) => "a reflection block",
+            Value::Macro(_) => "a macro",
+            Value::Poison => "an erroneous value",
+        }
+    }
+}
+
+/// Colour components as a 5-vector `<r, g, b, f, t>`.
+pub fn colour_to_array(c: &Colour) -> [f64; 5] {
+    [c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit]
+}
+
+/// A colour from `<r, g, b, f, t>`.
+pub fn colour_from_array(a: [f64; 5]) -> Colour {
+    Colour {
+        rgb: DVec3::new(a[0], a[1], a[2]),
+        filter: a[3],
+        transmit: a[4],
+    }
+}

@@ -1,0 +1,572 @@
+//! Lowering: pest's parse tree to the [`ast`](super::ast), one function per rule.
+
+use super::ast::*;
+use super::intern::intern;
+use super::parser::Rule;
+use crate::diag::{codes, Diagnostic};
+use crate::span::{FileId, Span};
+use pest::iterators::{Pair, Pairs};
+use std::rc::Rc;
+
+/// The longest chain of binary operators in one expression; longer chains are refused
+/// so that evaluating the left-deep tree cannot exhaust the stack.
+pub const MAX_CHAIN: usize = 10_000;
+
+/// Lowers pest pairs of one file (byte offsets shifted by `offset`).
+pub struct Lowerer {
+    /// The file being lowered.
+    pub file: FileId,
+    /// Added to pest's byte offsets (non-zero when a tail of the file was parsed).
+    pub offset: usize,
+    /// Problems found while lowering (bad escapes, numbers, limits).
+    pub diags: Vec<Diagnostic>,
+}
+
+type P<'i> = Pair<'i, Rule>;
+
+impl Lowerer {
+    fn span(&self, p: &P) -> Span {
+        let s = p.as_span();
+        Span::new(self.file, s.start() + self.offset, s.end() + self.offset)
+    }
+
+    /// Lowers the children of `file`/`one_item`/`body`-like pairs into items.
+    pub fn items(&mut self, pairs: Pairs<Rule>) -> Vec<Item> {
+        pairs.filter(|p| p.as_rule() != Rule::EOI).map(|p| self.item(p)).collect()
+    }
+
+    fn item(&mut self, p: P) -> Item {
+        let span = self.span(&p);
+        match p.as_rule() {
+            Rule::block => Item::Block(Box::new(self.block(p))),
+            Rule::keyword => Item::Keyword(self.keyword(p)),
+            Rule::bracket => {
+                let items = self.items(p.into_inner());
+                Item::Bracket(Box::new(Bracket { items, span }))
+            }
+            Rule::comma => Item::Comma(span),
+            Rule::semicolon => Item::Semicolon(span),
+            Rule::expr => Item::Expr(Box::new(self.expr(p))),
+            _ => Item::Directive(Box::new(self.directive(p))),
+        }
+    }
+
+    fn keyword(&mut self, p: P) -> Keyword {
+        Keyword {
+            name: super::keywords::canonical(p.as_str()),
+            span: self.span(&p),
+        }
+    }
+
+    fn block(&mut self, p: P) -> Block {
+        let span = self.span(&p);
+        let mut inner = p.into_inner();
+        let keyword = self.keyword(inner.next().expect("block keyword"));
+        let items = self.items(inner);
+        Block { keyword, items, span }
+    }
+
+    fn lvalue(&mut self, p: P) -> LValue {
+        let mut inner = p.into_inner();
+        let name = inner.next().expect("lvalue name");
+        let name_span = self.span(&name);
+        let indices = inner.map(|i| self.expr(i.into_inner().next().expect("index"))).collect();
+        LValue {
+            name: intern(name.as_str()),
+            name_span,
+            indices,
+        }
+    }
+
+    fn body(&mut self, p: P) -> Vec<Item> {
+        debug_assert_eq!(p.as_rule(), Rule::body);
+        self.items(p.into_inner())
+    }
+
+    fn directive(&mut self, p: P) -> Directive {
+        let span = self.span(&p);
+        let rule = p.as_rule();
+        let mut inner = p.into_inner();
+        let kind = match rule {
+            Rule::declare_d => {
+                let local = inner.next().expect("kind").as_str() == "local";
+                let target = self.lvalue(inner.next().expect("lvalue"));
+                let v = inner.next().expect("rhs");
+                let value = match v.as_rule() {
+                    Rule::block => Rhs::Block(Box::new(self.block(v))),
+                    _ => Rhs::Expr(Box::new(self.expr(v))),
+                };
+                DirectiveKind::Declare { local, target, value }
+            }
+            Rule::undef_d => {
+                let n = inner.nth(1).expect("name");
+                DirectiveKind::Undef {
+                    name: intern(n.as_str()),
+                    span: self.span(&n),
+                }
+            }
+            Rule::if_d => {
+                inner.next();
+                let cond = self.expr(inner.next().expect("cond"));
+                let body = self.body(inner.next().expect("body"));
+                let mut branches = vec![(cond, body)];
+                let mut otherwise = None;
+                for part in inner {
+                    match part.as_rule() {
+                        Rule::elseif_d => {
+                            let mut e = part.into_inner();
+                            e.next();
+                            let c = self.expr(e.next().expect("cond"));
+                            let b = self.body(e.next().expect("body"));
+                            branches.push((c, b));
+                        }
+                        Rule::else_d => otherwise = Some(self.else_body(part)),
+                        _ => {}
+                    }
+                }
+                DirectiveKind::If { branches, otherwise }
+            }
+            Rule::ifdef_d => {
+                let negate = inner.next().expect("kind").as_str() == "ifndef";
+                let target = self.lvalue(inner.next().expect("lvalue"));
+                let then = self.body(inner.next().expect("body"));
+                let mut otherwise = None;
+                for part in inner {
+                    if part.as_rule() == Rule::else_d {
+                        otherwise = Some(self.else_body(part));
+                    }
+                }
+                DirectiveKind::IfDef {
+                    negate,
+                    target,
+                    then,
+                    otherwise,
+                }
+            }
+            Rule::switch_d => {
+                inner.next();
+                let value = self.expr(inner.next().expect("value"));
+                let mut cases = Vec::new();
+                let mut otherwise = None;
+                for part in inner {
+                    match part.as_rule() {
+                        Rule::case_d => cases.push(self.case(part)),
+                        Rule::else_d => otherwise = Some(self.else_body(part)),
+                        _ => {}
+                    }
+                }
+                DirectiveKind::Switch {
+                    value,
+                    cases,
+                    otherwise,
+                }
+            }
+            Rule::while_d => {
+                inner.next();
+                let cond = self.expr(inner.next().expect("cond"));
+                let body = self.body(inner.next().expect("body"));
+                DirectiveKind::While { cond, body }
+            }
+            Rule::for_d => {
+                inner.next();
+                let v = inner.next().expect("var");
+                let var_span = self.span(&v);
+                let var = intern(v.as_str());
+                let start = self.expr(inner.next().expect("start"));
+                let end = self.expr(inner.next().expect("end"));
+                let mut step = None;
+                let mut body = Vec::new();
+                for part in inner {
+                    match part.as_rule() {
+                        Rule::expr => step = Some(self.expr(part)),
+                        Rule::body => body = self.body(part),
+                        _ => {}
+                    }
+                }
+                DirectiveKind::For {
+                    var,
+                    var_span,
+                    start,
+                    end,
+                    step,
+                    body,
+                }
+            }
+            Rule::macro_d => {
+                inner.next();
+                let n = inner.next().expect("name");
+                let name_span = self.span(&n);
+                let mut params = Vec::new();
+                let mut body = Vec::new();
+                for part in inner {
+                    match part.as_rule() {
+                        Rule::param => {
+                            let pspan = self.span(&part);
+                            let mut optional = false;
+                            let mut name = None;
+                            for x in part.into_inner() {
+                                match x.as_rule() {
+                                    Rule::optional_kw => optional = true,
+                                    _ => name = Some(intern(x.as_str())),
+                                }
+                            }
+                            params.push(Param {
+                                name: name.expect("param name"),
+                                optional,
+                                span: pspan,
+                            });
+                        }
+                        Rule::body => body = self.body(part),
+                        _ => {}
+                    }
+                }
+                DirectiveKind::Macro(Rc::new(MacroDef {
+                    name: intern(n.as_str()),
+                    name_span,
+                    params,
+                    body,
+                }))
+            }
+            Rule::include_d => {
+                inner.next();
+                DirectiveKind::Include(self.expr(inner.next().expect("file")))
+            }
+            Rule::message_d => {
+                let kind = match inner.next().expect("kind").as_str() {
+                    "debug" => MessageKind::Debug,
+                    "warning" => MessageKind::Warning,
+                    _ => MessageKind::Error,
+                };
+                DirectiveKind::Message(kind, self.expr(inner.next().expect("message")))
+            }
+            Rule::default_d => {
+                inner.next();
+                DirectiveKind::Default(self.items(inner))
+            }
+            Rule::version_d => {
+                inner.next();
+                DirectiveKind::Version(self.expr(inner.next().expect("version")))
+            }
+            other => unreachable!("not a directive rule: {other:?}"),
+        };
+        Directive { kind, span }
+    }
+
+    fn else_body(&mut self, p: P) -> Vec<Item> {
+        let body = p.into_inner().find(|x| x.as_rule() == Rule::body).expect("else body");
+        self.body(body)
+    }
+
+    fn case(&mut self, p: P) -> Case {
+        let mut inner = p.into_inner();
+        let head = inner.next().expect("case head");
+        let span = self.span(&head);
+        let rule = head.as_rule();
+        let mut exprs = head.into_inner().filter(|x| x.as_rule() == Rule::expr);
+        let test = if rule == Rule::case_head {
+            CaseTest::Case(self.expr(exprs.next().expect("case value")))
+        } else {
+            let a = self.expr(exprs.next().expect("low"));
+            let b = self.expr(exprs.next().expect("high"));
+            CaseTest::Range(a, b)
+        };
+        let body = self.body(inner.next().expect("case body"));
+        let breaks = inner.next().is_some();
+        Case {
+            test,
+            body,
+            breaks,
+            span,
+        }
+    }
+
+    /// Lowers an expression-level pair of any precedence level.
+    pub fn expr(&mut self, p: P) -> Expr {
+        let span = self.span(&p);
+        match p.as_rule() {
+            Rule::expr => {
+                let mut inner = p.into_inner();
+                let first = self.expr(inner.next().expect("operand"));
+                if inner.next().is_some() {
+                    let a = self.expr(inner.next().expect("then"));
+                    inner.next();
+                    let b = self.expr(inner.next().expect("else"));
+                    Expr {
+                        kind: ExprKind::Cond(Box::new(first), Box::new(a), Box::new(b)),
+                        span,
+                    }
+                } else {
+                    first
+                }
+            }
+            Rule::or_expr | Rule::and_expr | Rule::cmp_expr | Rule::sum | Rule::product => self.binary(p),
+            Rule::unary => {
+                let mut ops = Vec::new();
+                let mut operand = None;
+                for x in p.into_inner() {
+                    match x.as_rule() {
+                        Rule::prefix_op => ops.push((x.as_str(), self.span(&x))),
+                        _ => operand = Some(self.expr(x)),
+                    }
+                }
+                let mut e = operand.expect("unary operand");
+                for (op, s) in ops.into_iter().rev() {
+                    let op = match op {
+                        "-" => UnOp::Neg,
+                        "+" => UnOp::Plus,
+                        _ => UnOp::Not,
+                    };
+                    let span = s.join(e.span);
+                    e = Expr {
+                        kind: ExprKind::Unary(op, Box::new(e)),
+                        span,
+                    };
+                }
+                e
+            }
+            Rule::postfix => {
+                let mut inner = p.into_inner();
+                let mut e = self.expr(inner.next().expect("primary"));
+                for x in inner {
+                    let xs = self.span(&x);
+                    let span = e.span.join(xs);
+                    e = match x.as_rule() {
+                        Rule::dot => {
+                            let name = x.into_inner().next().expect("component");
+                            Expr {
+                                kind: ExprKind::Dot(Box::new(e), intern(name.as_str()), xs),
+                                span,
+                            }
+                        }
+                        _ => {
+                            let i = self.expr(x.into_inner().next().expect("index"));
+                            Expr {
+                                kind: ExprKind::Index(Box::new(e), Box::new(i)),
+                                span,
+                            }
+                        }
+                    };
+                }
+                e
+            }
+            Rule::number => {
+                let v = match p.as_str().parse::<f64>() {
+                    Ok(v) if v.is_finite() => v,
+                    _ => {
+                        self.diags.push(
+                            Diagnostic::error(codes::BAD_NUMBER, span, "number too large")
+                                .with_label("this does not fit in a 64-bit float")
+                                .with_help("use a number below 1.8e308"),
+                        );
+                        0.0
+                    }
+                };
+                Expr {
+                    kind: ExprKind::Number(v),
+                    span,
+                }
+            }
+            Rule::string => {
+                let inner = p.into_inner().next().expect("string inner");
+                let text = self.unescape(&inner);
+                Expr {
+                    kind: ExprKind::Str(Rc::from(text)),
+                    span,
+                }
+            }
+            Rule::vector => Expr {
+                kind: ExprKind::Vector(p.into_inner().map(|x| self.expr(x)).collect()),
+                span,
+            },
+            Rule::paren => {
+                let inner = self.expr(p.into_inner().next().expect("paren"));
+                Expr { span, ..inner }
+            }
+            Rule::colour => self.colour(p),
+            Rule::array => {
+                let mut dims = Vec::new();
+                let mut init = None;
+                for x in p.into_inner() {
+                    match x.as_rule() {
+                        Rule::expr => dims.push(self.expr(x)),
+                        Rule::array_init => init = Some(self.array_init(x)),
+                        _ => {}
+                    }
+                }
+                Expr {
+                    kind: ExprKind::Array { dims, init },
+                    span,
+                }
+            }
+            Rule::call => {
+                let mut inner = p.into_inner();
+                let n = inner.next().expect("name");
+                let name_span = self.span(&n);
+                let args = inner
+                    .map(|a| match a.as_rule() {
+                        Rule::block => Arg::Block(self.block(a)),
+                        _ => Arg::Expr(self.expr(a)),
+                    })
+                    .collect();
+                Expr {
+                    kind: ExprKind::Call {
+                        name: intern(n.as_str()),
+                        name_span,
+                        args,
+                    },
+                    span,
+                }
+            }
+            Rule::ident => Expr {
+                kind: ExprKind::Ident(intern(p.as_str())),
+                span,
+            },
+            other => unreachable!("not an expression rule: {other:?}"),
+        }
+    }
+
+    fn binary(&mut self, p: P) -> Expr {
+        let span = self.span(&p);
+        let mut inner = p.into_inner();
+        let mut e = self.expr(inner.next().expect("operand"));
+        let mut count = 0;
+        while let Some(op) = inner.next() {
+            count += 1;
+            let rhs = self.expr(inner.next().expect("right operand"));
+            if count == MAX_CHAIN {
+                self.diags.push(
+                    Diagnostic::error(
+                        codes::NESTING_TOO_DEEP,
+                        span,
+                        format!("expression with more than {MAX_CHAIN} operators"),
+                    )
+                    .with_help("split it into several #declared parts"),
+                );
+            }
+            if count >= MAX_CHAIN {
+                continue;
+            }
+            let op = match op.as_str() {
+                "|" => BinOp::Or,
+                "&" => BinOp::And,
+                "<" => BinOp::Lt,
+                "<=" => BinOp::Le,
+                "=" => BinOp::Eq,
+                "!=" => BinOp::Ne,
+                ">=" => BinOp::Ge,
+                ">" => BinOp::Gt,
+                "+" => BinOp::Add,
+                "-" => BinOp::Sub,
+                "*" => BinOp::Mul,
+                _ => BinOp::Div,
+            };
+            let span = e.span.join(rhs.span);
+            e = Expr {
+                kind: ExprKind::Binary(op, Box::new(e), Box::new(rhs)),
+                span,
+            };
+        }
+        e
+    }
+
+    fn colour(&mut self, p: P) -> Expr {
+        let span = self.span(&p);
+        let mut inner = p.into_inner();
+        let kw = inner.next().expect("colour keyword").as_str();
+        let srgb = kw.starts_with('s');
+        let form = match kw.trim_start_matches('s') {
+            "rgb" => ColourForm::Rgb,
+            "rgbf" => ColourForm::Rgbf,
+            "rgbt" => ColourForm::Rgbt,
+            "rgbft" => ColourForm::Rgbft,
+            _ => ColourForm::Plain,
+        };
+        let mut value = None;
+        let mut parts = Vec::new();
+        for x in inner {
+            match x.as_rule() {
+                Rule::colour_part => {
+                    let mut xi = x.into_inner();
+                    let part = match xi.next().expect("part").as_str() {
+                        "red" => ColourPart::Red,
+                        "green" => ColourPart::Green,
+                        "blue" => ColourPart::Blue,
+                        "filter" => ColourPart::Filter,
+                        "transmit" => ColourPart::Transmit,
+                        _ => ColourPart::Gray,
+                    };
+                    parts.push((part, self.expr(xi.next().expect("part value"))));
+                }
+                _ => value = Some(Box::new(self.expr(x))),
+            }
+        }
+        Expr {
+            kind: ExprKind::Colour {
+                kw: ColourKw { form, srgb },
+                value,
+                parts,
+            },
+            span,
+        }
+    }
+
+    fn array_init(&mut self, p: P) -> ArrayInit {
+        let span = self.span(&p);
+        let elems = p
+            .into_inner()
+            .map(|x| match x.as_rule() {
+                Rule::array_init => ArrayElem::Nested(self.array_init(x)),
+                Rule::block => ArrayElem::Block(self.block(x)),
+                _ => ArrayElem::Expr(self.expr(x)),
+            })
+            .collect();
+        ArrayInit { elems, span }
+    }
+
+    fn unescape(&mut self, p: &P) -> String {
+        let raw = p.as_str();
+        let base = p.as_span().start() + self.offset;
+        let mut out = String::with_capacity(raw.len());
+        let mut chars = raw.char_indices();
+        while let Some((i, c)) = chars.next() {
+            if c != '\\' {
+                out.push(c);
+                continue;
+            }
+            let Some((_, e)) = chars.next() else { break };
+            match e {
+                'n' => out.push('\n'),
+                't' => out.push('\t'),
+                'r' => out.push('\r'),
+                'b' => out.push('\u{8}'),
+                'f' => out.push('\u{c}'),
+                'a' => out.push('\u{7}'),
+                'v' => out.push('\u{b}'),
+                '\\' => out.push('\\'),
+                '"' => out.push('"'),
+                '\'' => out.push('\''),
+                'u' => {
+                    let hex: String = raw[i + 2..].chars().take(4).collect();
+                    match u32::from_str_radix(&hex, 16).ok().and_then(char::from_u32) {
+                        Some(ch) if hex.len() == 4 => {
+                            out.push(ch);
+                            for _ in 0..4 {
+                                chars.next();
+                            }
+                        }
+                        _ => self.bad_escape(base + i, base + i + 2 + hex.len(), "`\\u` needs four hex digits"),
+                    }
+                }
+                _ => self.bad_escape(base + i, base + i + 1 + e.len_utf8(), "unknown escape"),
+            }
+        }
+        out
+    }
+
+    fn bad_escape(&mut self, start: usize, end: usize, what: &str) {
+        self.diags.push(
+            Diagnostic::error(codes::BAD_ESCAPE, Span::new(self.file, start, end), format!("{what} in string"))
+                .with_help(r#"valid escapes are \n \t \r \b \f \a \v \\ \" \' and \uXXXX"#),
+        );
+    }
+}

@@ -1,0 +1,220 @@
+//! Stage 1: source text to syntax tree.
+//!
+//! [`parse`] runs the lexical [`prepass`] and then the pest grammar. When the grammar
+//! fails, parsing restarts item by item and resynchronises at the next line that
+//! starts at column 0, so several independent syntax errors are reported in one run.
+
+pub mod ast;
+pub mod intern;
+pub mod keywords;
+mod lower;
+mod names;
+mod parser;
+pub mod prepass;
+
+pub use intern::{intern, Sym};
+pub use lower::MAX_CHAIN;
+
+use crate::diag::{codes, Diagnostic};
+use crate::span::{FileId, Span};
+use parser::{Rule, RtsParser};
+use pest::Parser;
+
+/// Parses one file. Returns the items that parsed and the problems found; when the
+/// list holds an error the tree is incomplete and should not be evaluated.
+pub fn parse(text: &str, file: FileId) -> (ast::File, Vec<Diagnostic>) {
+    let diags = prepass::check(text, file);
+    if !diags.is_empty() {
+        return (ast::File::default(), diags);
+    }
+    let mut lower = lower::Lowerer {
+        file,
+        offset: 0,
+        diags: Vec::new(),
+    };
+    match RtsParser::parse(Rule::file, text) {
+        Ok(mut pairs) => {
+            let file_pair = pairs.next().expect("file rule");
+            let items = lower.items(file_pair.into_inner());
+            (ast::File { items }, lower.diags)
+        }
+        Err(_) => recover(text, file, lower),
+    }
+}
+
+/// Item-by-item parsing after a failure of the whole-file parse.
+fn recover(text: &str, file: FileId, mut lower: lower::Lowerer) -> (ast::File, Vec<Diagnostic>) {
+    pest::set_error_detail(true);
+    let mut items = Vec::new();
+    let mut diags = Vec::new();
+    let mut pos = 0;
+    while pos < text.len() {
+        let rest = &text[pos..];
+        if RtsParser::parse(Rule::only_trivia, rest).is_ok() {
+            break;
+        }
+        match RtsParser::parse(Rule::one_item, rest) {
+            Ok(mut pairs) => {
+                let pair = pairs.next().expect("one_item");
+                let end = pair.as_span().end();
+                lower.offset = pos;
+                items.extend(lower.items(pair.into_inner()));
+                pos += end.max(1);
+                // Skip to the next char boundary in the unlikely case of zero progress.
+                while !text.is_char_boundary(pos) {
+                    pos += 1;
+                }
+            }
+            Err(e) => {
+                let at = pos + error_offset(&e);
+                diags.push(syntax_error(text, file, at, &e));
+                pos = resync(text, at.max(pos + 1));
+            }
+        }
+    }
+    pest::set_error_detail(false);
+    diags.extend(lower.diags);
+    (ast::File { items }, diags)
+}
+
+fn error_offset(e: &pest::error::Error<Rule>) -> usize {
+    match e.location {
+        pest::error::InputLocation::Pos(p) => p,
+        pest::error::InputLocation::Span((s, _)) => s,
+    }
+}
+
+/// The start of the next line after `at` that begins at column 0 with a letter or `#`,
+/// or the end of the text.
+fn resync(text: &str, at: usize) -> usize {
+    let bytes = text.as_bytes();
+    let mut i = at.min(text.len());
+    loop {
+        match text[i..].find('\n') {
+            None => return text.len(),
+            Some(n) => {
+                i += n + 1;
+                if let Some(&c) = bytes.get(i) {
+                    if c.is_ascii_alphabetic() || c == b'#' {
+                        return i;
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// The token at `at`, for "found …" in messages.
+fn token_at(text: &str, at: usize) -> (String, usize) {
+    let rest = &text[at.min(text.len())..];
+    let Some(c) = rest.chars().next() else {
+        return ("end of file".into(), 0);
+    };
+    let len = if c.is_alphanumeric() || c == '_' {
+        rest.find(|ch: char| !(ch.is_alphanumeric() || ch == '_' || ch == '.')).unwrap_or(rest.len())
+    } else {
+        c.len_utf8()
+    };
+    (format!("`{}`", &rest[..len]), len)
+}
+
+fn syntax_error(text: &str, file: FileId, at: usize, e: &pest::error::Error<Rule>) -> Diagnostic {
+    let mut expected: Vec<&str> = Vec::new();
+    if let pest::error::ErrorVariant::ParsingError { positives, .. } = &e.variant {
+        expected.extend(positives.iter().filter_map(|r| names::human(*r)));
+    }
+    if let Some(attempts) = e.parse_attempts() {
+        for tok in attempts.expected_tokens() {
+            {
+                let token = tok.to_string();
+                let human = match token.as_str() {
+                    "{" => "`{`",
+                    "}" => "`}`",
+                    "(" => "`(`",
+                    ")" => "`)`",
+                    "[" => "`[`",
+                    "]" => "`]`",
+                    ">" => "`>`",
+                    "," => "`,`",
+                    "=" => "`=`",
+                    ";" => "`;`",
+                    ":" => "`:`",
+                    "#" => "a directive",
+                    "\"" => "a string",
+                    "<" => "a vector `<…>`",
+                    _ => continue,
+                };
+                expected.push(human);
+            }
+        }
+        for stack in attempts.call_stacks() {
+            if let Some(name) = names::human(stack.deepest.get_rule().copied().unwrap_or(Rule::EOI)) {
+                if stack.deepest.get_rule().is_some() {
+                    expected.push(name);
+                }
+            }
+        }
+    }
+    if expected.len() > 1 {
+        expected.retain(|n| *n != "a statement");
+    }
+    expected.sort_unstable();
+    expected.dedup();
+    let (found, len) = token_at(text, at);
+    let list = match expected.as_slice() {
+        [] => "something else".to_string(),
+        [one] => one.to_string(),
+        [init @ .., last] => format!("{} or {last}", init.join(", ")),
+    };
+    let mut d = Diagnostic::error(
+        codes::SYNTAX_EXPECTED,
+        Span::new(file, at, at + len),
+        format!("expected {list}, found {found}"),
+    )
+    .with_label(format!("expected {list}"));
+    if found == "`{`" {
+        d = d.with_help("only keywords open blocks: is the keyword before `{` misspelled?");
+    } else if expected.contains(&"`,`") && found.starts_with("`<") {
+        d = d.with_help("separate vectors with commas: `<0,0,0>, <1,1,1>`");
+    }
+    if let Some(word) = found.strip_prefix('`').and_then(|s| s.strip_suffix('`')) {
+        if let Some(s) = crate::diag::did_you_mean(word, keywords::KEYWORDS.iter().copied()) {
+            d = d.with_help(format!("did you mean the keyword `{s}`?"));
+        }
+    }
+    d
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ok(src: &str) -> ast::File {
+        let (f, d) = parse(src, FileId(0));
+        assert!(d.is_empty(), "{src}: {d:#?}");
+        f
+    }
+
+    #[test]
+    fn parses_core_forms() {
+        let f = ok("#version 3.7;\n#declare A = 1 + 2 * 3;\nsphere { <0,1,0>, A pigment { color rgb <1,0,0> } finish { phong 0.8 } }");
+        assert_eq!(f.items.len(), 3);
+        ok("#if (A < 2 & B >= 3) #debug \"x\" #elseif (1) #else #end");
+        ok("#macro M(A, optional B) sphere { A, 1 } #end M(<1,2,3>)");
+        ok("#for (I, 0, 10, 2) #end #while (0) #end #switch (2) #case (1) #break #range (2, 3) #else #end");
+        ok("#declare Arr = array[2][2] { {1, 2}, {3, 4} }; #declare V = Arr[1][0] * <1,2,3>.x;");
+        ok("pigment { color red 1 green 0.5 } pigment { rgb <1,0,0> filter 0.5 }");
+        ok("plane { y, 0 translate -x rotate <0, 30, 0> }");
+        ok("/* a /* nested */ comment */ #declare S = \"a\\\"b\\n\";");
+        ok("#declare C = A ? 1 : B ? 2 : 3;");
+    }
+
+    #[test]
+    fn reports_several_errors() {
+        let (_, d) = parse("sphere { 0, 1 ]\n", FileId(0));
+        assert_eq!(d.len(), 1);
+        let (_, d) = parse("sphere { <0,0,0> 1 2 + }\nplane { y, 0 }\nbox { 1, 2 * }\n", FileId(0));
+        assert_eq!(d.len(), 2, "{d:#?}");
+        assert!(d.iter().all(|x| x.code == codes::SYNTAX_EXPECTED));
+    }
+}

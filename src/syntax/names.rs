@@ -1,0 +1,81 @@
+//! Human names for grammar rules, used in "expected …" messages. The `match` has no
+//! wildcard arm, so a new rule cannot leak its internal name into a message.
+
+use super::parser::Rule;
+
+/// How to name what `rule` stands for in a message; `None` for rules that are never
+/// worth naming on their own (their parents are named instead).
+pub fn human(rule: Rule) -> Option<&'static str> {
+    Some(match rule {
+        Rule::EOI => "end of file",
+        Rule::WHITESPACE | Rule::COMMENT | Rule::line_comment | Rule::block_comment => return None,
+        Rule::file | Rule::one_item | Rule::only_trivia | Rule::item | Rule::body => "a statement",
+        Rule::block => "a block",
+        Rule::bracket => "`[`",
+        Rule::comma => "`,`",
+        Rule::semicolon => "`;`",
+        Rule::directive
+        | Rule::declare_d
+        | Rule::undef_d
+        | Rule::if_d
+        | Rule::ifdef_d
+        | Rule::switch_d
+        | Rule::while_d
+        | Rule::for_d
+        | Rule::macro_d
+        | Rule::include_d
+        | Rule::message_d
+        | Rule::default_d
+        | Rule::version_d => "a directive",
+        Rule::decl_kind => "`declare` or `local`",
+        Rule::lvalue | Rule::ident_name | Rule::ident | Rule::ident_raw => "a name",
+        Rule::rhs => "a value",
+        Rule::elseif_d | Rule::kw_elseif => "`#elseif`",
+        Rule::else_d | Rule::kw_else => "`#else`",
+        Rule::end_d | Rule::kw_end => "`#end`",
+        Rule::ifdef_kind => "`ifdef` or `ifndef`",
+        Rule::case_d | Rule::case_head | Rule::kw_case => "`#case`",
+        Rule::range_head | Rule::kw_range => "`#range`",
+        Rule::break_d | Rule::kw_break => "`#break`",
+        Rule::param => "a parameter name",
+        Rule::optional_kw => "`optional`",
+        Rule::message_kind => "`debug`, `warning` or `error`",
+        Rule::kw_if => "`if`",
+        Rule::kw_undef => "`undef`",
+        Rule::kw_switch => "`switch`",
+        Rule::kw_while => "`while`",
+        Rule::kw_for => "`for`",
+        Rule::kw_macro => "`macro`",
+        Rule::kw_include => "`include`",
+        Rule::kw_default => "`default`",
+        Rule::kw_version => "`version`",
+        Rule::expr
+        | Rule::or_expr
+        | Rule::and_expr
+        | Rule::cmp_expr
+        | Rule::sum
+        | Rule::product
+        | Rule::unary
+        | Rule::postfix
+        | Rule::primary
+        | Rule::paren
+        | Rule::arg
+        | Rule::array_elem => "an expression",
+        Rule::question => "`?`",
+        Rule::colon => "`:`",
+        Rule::or_op | Rule::and_op | Rule::cmp_op | Rule::add_op | Rule::mul_op => "an operator",
+        Rule::prefix_op => "`-`, `+` or `!`",
+        Rule::dot => "`.`",
+        Rule::index => "`[`",
+        Rule::vector => "a vector `<…>`",
+        Rule::colour | Rule::colour_kw => "a colour",
+        Rule::colour_part | Rule::colour_part_kw => "`red`, `green`, `blue`, `filter` or `transmit`",
+        Rule::array | Rule::array_kw => "an array",
+        Rule::array_init => "`{`",
+        Rule::call => "a function call",
+        Rule::number => "a number",
+        Rule::string | Rule::string_inner => "a string",
+        Rule::ident_char => return None,
+        Rule::keyword | Rule::keyword_word => "a keyword",
+    })
+}

@@ -1,0 +1,420 @@
+//! Lexical checks before parsing: unclosed strings, comments, brackets and directives,
+//! stray closers, unknown directives, and nesting limits.
+//!
+//! These give better messages than a parser can (they point at the opener, not at the
+//! end of the file) and they guarantee the recursive grammar never meets input nested
+//! deeper than [`MAX_NESTING`].
+
+use crate::diag::{codes, did_you_mean, Diagnostic};
+use crate::span::{FileId, Span};
+
+/// The deepest nesting of brackets, block comments, directives, vectors, colour
+/// keywords, prefix operators or `?:` accepted.
+pub const MAX_NESTING: usize = 256;
+
+const OPENING_DIRECTIVES: &[&str] = &["if", "ifdef", "ifndef", "while", "for", "macro", "switch"];
+const MIDDLE_DIRECTIVES: &[&str] = &["else", "elseif", "case", "range", "break"];
+const PLAIN_DIRECTIVES: &[&str] = &[
+    "declare", "local", "undef", "include", "debug", "warning", "error", "default", "version",
+];
+
+struct Scanner<'a> {
+    bytes: &'a [u8],
+    file: FileId,
+    diags: Vec<Diagnostic>,
+    brackets: Vec<(u8, usize)>,
+    directives: Vec<(&'static str, usize, usize)>,
+    angle_depth: usize,
+    prefix_run: usize,
+    question_depth: usize,
+    /// The last significant byte, to tell a vector's `<` from less-than.
+    prev: u8,
+}
+
+/// Checks `text`; returns the problems found (empty when the file may be parsed).
+pub fn check(text: &str, file: FileId) -> Vec<Diagnostic> {
+    let mut s = Scanner {
+        bytes: text.as_bytes(),
+        file,
+        diags: Vec::new(),
+        brackets: Vec::new(),
+        directives: Vec::new(),
+        angle_depth: 0,
+        prefix_run: 0,
+        question_depth: 0,
+        prev: b'{',
+    };
+    s.run();
+    s.diags
+}
+
+fn closer_for(open: u8) -> u8 {
+    match open {
+        b'{' => b'}',
+        b'(' => b')',
+        _ => b']',
+    }
+}
+
+fn is_word_byte(b: u8) -> bool {
+    b.is_ascii_alphanumeric() || b == b'_'
+}
+
+impl Scanner<'_> {
+    fn span(&self, start: usize, end: usize) -> Span {
+        Span::new(self.file, start, end)
+    }
+
+    fn too_deep(&mut self, at: usize, len: usize, what: &str) {
+        self.diags.push(
+            Diagnostic::error(
+                codes::NESTING_TOO_DEEP,
+                self.span(at, at + len),
+                format!("{what} nested more than {MAX_NESTING} deep"),
+            )
+            .with_label("too deep here")
+            .with_help("split the expression or block into #declared parts"),
+        );
+    }
+
+    fn run(&mut self) {
+        let b = self.bytes;
+        let mut i = 0;
+        while i < b.len() {
+            let c = b[i];
+            match c {
+                b'/' if b.get(i + 1) == Some(&b'/') => {
+                    while i < b.len() && b[i] != b'\n' {
+                        i += 1;
+                    }
+                    continue;
+                }
+                b'/' if b.get(i + 1) == Some(&b'*') => match self.comment(i) {
+                    Some(end) => {
+                        i = end;
+                        continue;
+                    }
+                    None => return,
+                },
+                b'"' => {
+                    i = self.string(i);
+                    self.prev = b'"';
+                    self.prefix_run = 0;
+                    continue;
+                }
+                b'{' | b'(' | b'[' => {
+                    self.brackets.push((c, i));
+                    if self.brackets.len() > MAX_NESTING {
+                        self.too_deep(i, 1, "brackets");
+                        return;
+                    }
+                }
+                b'}' | b')' | b']' => {
+                    if !self.close(c, i) {
+                        return;
+                    }
+                }
+                b'<' => {
+                    if matches!(self.prev, b'(' | b',' | b'<' | b'[' | b'{' | b'=' | b'+' | b'-' | b'*' | b'/' | b'?' | b':' | b'!' | b'&' | b'|')
+                    {
+                        self.angle_depth += 1;
+                        if self.angle_depth > MAX_NESTING {
+                            self.too_deep(i, 1, "vectors");
+                            return;
+                        }
+                    }
+                }
+                b'>' => self.angle_depth = self.angle_depth.saturating_sub(1),
+                b'?' => {
+                    self.question_depth += 1;
+                    if self.question_depth > MAX_NESTING {
+                        self.too_deep(i, 1, "conditional expressions");
+                        return;
+                    }
+                }
+                b':' => self.question_depth = self.question_depth.saturating_sub(1),
+                b'-' | b'+' | b'!' => {
+                    self.prefix_run += 1;
+                    if self.prefix_run > MAX_NESTING {
+                        self.too_deep(i, 1, "prefix operators");
+                        return;
+                    }
+                    self.prev = c;
+                    i += 1;
+                    continue;
+                }
+                b'#' => {
+                    if !self.directive(i) {
+                        return;
+                    }
+                }
+                _ if c.is_ascii_alphabetic() || c == b'_' => {
+                    let start = i;
+                    while i < b.len() && is_word_byte(b[i]) {
+                        i += 1;
+                    }
+                    let word = &b[start..i];
+                    let colourish = matches!(
+                        word,
+                        b"rgb" | b"rgbf" | b"rgbt" | b"rgbft" | b"srgb" | b"srgbf" | b"srgbt" | b"srgbft" | b"color" | b"colour"
+                    );
+                    if colourish {
+                        self.prefix_run += 1;
+                        if self.prefix_run > MAX_NESTING {
+                            self.too_deep(start, i - start, "colour keywords");
+                            return;
+                        }
+                    } else {
+                        self.prefix_run = 0;
+                    }
+                    // Keywords put us in operand position for `<`; names do not, but
+                    // after a name a `<` is a comparison only in expressions, and a
+                    // false positive merely counts one level more.
+                    self.prev = b'a';
+                    continue;
+                }
+                _ => {}
+            }
+            if !c.is_ascii_whitespace() {
+                self.prev = c;
+                if !matches!(c, b'-' | b'+' | b'!') {
+                    self.prefix_run = 0;
+                }
+            }
+            i += 1;
+        }
+        self.finish();
+    }
+
+    /// Skips a block comment starting at `start`; `None` if it never closes or nests
+    /// too deeply (the diagnostic is recorded).
+    fn comment(&mut self, start: usize) -> Option<usize> {
+        let b = self.bytes;
+        let mut openers = vec![start];
+        let mut i = start + 2;
+        while i < b.len() {
+            if b[i] == b'/' && b.get(i + 1) == Some(&b'*') {
+                openers.push(i);
+                if openers.len() > MAX_NESTING {
+                    self.too_deep(i, 2, "block comments");
+                    return None;
+                }
+                i += 2;
+            } else if b[i] == b'*' && b.get(i + 1) == Some(&b'/') {
+                openers.pop();
+                i += 2;
+                if openers.is_empty() {
+                    return Some(i);
+                }
+            } else {
+                i += 1;
+            }
+        }
+        let at = *openers.last().unwrap_or(&start);
+        let mut d = Diagnostic::error(codes::UNCLOSED_COMMENT, self.span(at, at + 2), "unclosed block comment")
+            .with_label("this comment is never closed")
+            .with_help("add `*/` where the comment should end");
+        if openers.len() > 1 {
+            d = d.with_note("block comments nest in .rts as in POV-Ray: each `/*` needs its own `*/`");
+        }
+        self.diags.push(d);
+        None
+    }
+
+    /// Skips a string literal starting at `start`, reporting it when unclosed.
+    fn string(&mut self, start: usize) -> usize {
+        let b = self.bytes;
+        let mut i = start + 1;
+        while i < b.len() {
+            match b[i] {
+                b'\\' => i += 2,
+                b'"' => return i + 1,
+                b'\n' => break,
+                _ => i += 1,
+            }
+        }
+        let end = i.min(b.len());
+        self.diags.push(
+            Diagnostic::error(codes::UNCLOSED_STRING, self.span(start, end), "unclosed string")
+                .with_label("this string has no closing quote on its line")
+                .with_help("add `\"` at the end of the string (strings cannot span lines)"),
+        );
+        end
+    }
+
+    fn close(&mut self, c: u8, i: usize) -> bool {
+        match self.brackets.pop() {
+            Some((open, _)) if closer_for(open) == c => true,
+            Some((open, at)) => {
+                self.diags.push(
+                    Diagnostic::error(
+                        codes::UNMATCHED_DELIMITER,
+                        self.span(i, i + 1),
+                        format!("`{}` does not close the `{}` before it", c as char, open as char),
+                    )
+                    .with_label(format!("expected `{}` here", closer_for(open) as char))
+                    .with_secondary(self.span(at, at + 1), "this is the bracket still open")
+                    .with_help(format!(
+                        "close the `{}` with `{}` first, or remove this `{}`",
+                        open as char,
+                        closer_for(open) as char,
+                        c as char
+                    )),
+                );
+                false
+            }
+            None => {
+                self.diags.push(
+                    Diagnostic::error(
+                        codes::UNMATCHED_DELIMITER,
+                        self.span(i, i + 1),
+                        format!("`{}` with nothing to close", c as char),
+                    )
+                    .with_label("no opening bracket before this")
+                    .with_help("remove it, or add the opening bracket it belongs to"),
+                );
+                false
+            }
+        }
+    }
+
+    /// Handles `#word`; returns false when scanning should stop.
+    fn directive(&mut self, hash: usize) -> bool {
+        let b = self.bytes;
+        let mut i = hash + 1;
+        while i < b.len() && (b[i] == b' ' || b[i] == b'\t') {
+            i += 1;
+        }
+        let start = i;
+        while i < b.len() && is_word_byte(b[i]) {
+            i += 1;
+        }
+        let word = std::str::from_utf8(&b[start..i]).unwrap_or("");
+        let span = self.span(hash, i);
+        if let Some(name) = OPENING_DIRECTIVES.iter().find(|d| **d == word) {
+            self.directives.push((name, hash, i));
+            if self.directives.len() > MAX_NESTING {
+                self.too_deep(hash, i - hash, "directives");
+                return false;
+            }
+        } else if word == "end" {
+            if self.directives.pop().is_none() {
+                self.diags.push(
+                    Diagnostic::error(codes::STRAY_DIRECTIVE, span, "`#end` with nothing to close")
+                        .with_label("no #if, #while, #for, #macro or #switch is open here")
+                        .with_help("remove this `#end`, or add the directive it was meant to close"),
+                );
+                return false;
+            }
+        } else if MIDDLE_DIRECTIVES.contains(&word) {
+            let ok = match self.directives.last() {
+                Some((open, ..)) => match word {
+                    "else" => matches!(*open, "if" | "ifdef" | "ifndef" | "switch"),
+                    "elseif" => *open == "if",
+                    _ => *open == "switch",
+                },
+                None => false,
+            };
+            if !ok {
+                let needs = match word {
+                    "else" => "#if, #ifdef, #ifndef or #switch",
+                    "elseif" => "#if",
+                    _ => "#switch",
+                };
+                self.diags.push(
+                    Diagnostic::error(codes::STRAY_DIRECTIVE, span, format!("`#{word}` outside {needs}"))
+                        .with_label(format!("no {needs} is open here"))
+                        .with_help(format!("`#{word}` may only stand inside {needs} … #end")),
+                );
+                return false;
+            }
+        } else if !PLAIN_DIRECTIVES.contains(&word) {
+            let all = OPENING_DIRECTIVES
+                .iter()
+                .chain(MIDDLE_DIRECTIVES)
+                .chain(PLAIN_DIRECTIVES)
+                .chain(&["end"])
+                .copied();
+            let help = match did_you_mean(word, all) {
+                Some(s) => format!("did you mean `#{s}`?"),
+                None => "directives are #declare #local #undef #if #ifdef #ifndef #else #elseif #switch #case #range #break #while #for #macro #end #include #debug #warning #error #default #version".into(),
+            };
+            let msg = if word.is_empty() {
+                "`#` must be followed by a directive name".to_string()
+            } else {
+                format!("unknown directive `#{word}`")
+            };
+            self.diags.push(
+                Diagnostic::error(codes::UNKNOWN_DIRECTIVE, span, msg)
+                    .with_label("not a directive")
+                    .with_help(help),
+            );
+            return false;
+        }
+        self.prev = b'{';
+        true
+    }
+
+    fn finish(&mut self) {
+        if let Some(&(name, start, end)) = self.directives.last() {
+            self.diags.push(
+                Diagnostic::error(
+                    codes::UNCLOSED_DIRECTIVE,
+                    self.span(start, end),
+                    format!("`#{name}` is never closed with `#end`"),
+                )
+                .with_label("opened here")
+                .with_help(format!("add `#end` where the #{name} should end")),
+            );
+        }
+        if let Some(&(open, at)) = self.brackets.last() {
+            let what = match open {
+                b'{' => "block",
+                b'(' => "parenthesis",
+                _ => "bracket",
+            };
+            self.diags.push(
+                Diagnostic::error(
+                    codes::UNCLOSED_DELIMITER,
+                    self.span(at, at + 1),
+                    format!("unclosed {what}: `{}` is never closed", open as char),
+                )
+                .with_label("opened here")
+                .with_help(format!("add `{}` where it should end", closer_for(open) as char)),
+            );
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn codes(text: &str) -> Vec<&'static str> {
+        check(text, FileId(0)).into_iter().map(|d| d.code).collect()
+    }
+
+    #[test]
+    fn clean_input_passes() {
+        assert!(codes("sphere { <0,0,0>, 1 /* a /* nested */ comment */ } // x\n\"s\\\"\"").is_empty());
+    }
+
+    #[test]
+    fn finds_unclosed_things() {
+        assert_eq!(codes("sphere { 0, 1"), vec![codes::UNCLOSED_DELIMITER]);
+        assert_eq!(codes("/* open"), vec![codes::UNCLOSED_COMMENT]);
+        assert_eq!(codes("#debug \"open\n"), vec![codes::UNCLOSED_STRING]);
+        assert_eq!(codes("#if (1)\n"), vec![codes::UNCLOSED_DIRECTIVE]);
+        assert_eq!(codes("#end"), vec![codes::STRAY_DIRECTIVE]);
+        assert_eq!(codes("#delcare A = 1;"), vec![codes::UNKNOWN_DIRECTIVE]);
+        assert_eq!(codes(")"), vec![codes::UNMATCHED_DELIMITER]);
+    }
+
+    #[test]
+    fn deep_nesting_is_refused() {
+        let deep = "(".repeat(20_000) + "1" + &")".repeat(20_000);
+        assert_eq!(codes(&deep), vec![codes::NESTING_TOO_DEEP]);
+        let neg = "-".repeat(20_000) + "1";
+        assert_eq!(codes(&neg), vec![codes::NESTING_TOO_DEEP]);
+    }
+}
