@@ -5,3 +5,6 @@
 
 pub mod scene;
 pub mod span;
+pub mod build;
+pub mod output;
+pub mod render;
