@@ -19,10 +19,19 @@ fn flat_sphere_covers_exactly_the_pixels_inside_its_silhouette() {
     // Camera at z = -10 looking at a unit sphere: a pixel is covered exactly when
     // its ray passes closer than 1 to the centre.
     let cam = square_camera(DVec3::new(0.0, 0.0, -10.0), 0.5);
-    let s = with_texture(sphere(DVec3::ZERO, 1.0), texture(DVec3::splat(0.5), matte(1.0, 0.0)));
+    let s = with_texture(
+        sphere(DVec3::ZERO, 1.0),
+        texture(DVec3::splat(0.5), matte(1.0, 0.0)),
+    );
     let world = build(&scene(cam, vec![s]));
     let (w, h) = (41, 41);
-    let film = render(&world, &RenderOptions { width: w, height: h });
+    let film = render(
+        &world,
+        &RenderOptions {
+            width: w,
+            height: h,
+        },
+    );
     for j in 0..h {
         for i in 0..w {
             // The ray direction through the pixel, and its distance from the centre.
@@ -58,7 +67,13 @@ fn diffuse_of_a_plane_is_n_dot_l() {
     let light = DVec3::new(3.0, 4.0, 1.0);
     sc.lights.push(point_light(light));
     let world = build(&sc);
-    let film = render(&world, &RenderOptions { width: 9, height: 9 });
+    let film = render(
+        &world,
+        &RenderOptions {
+            width: 9,
+            height: 9,
+        },
+    );
     for j in 0..9 {
         for i in 0..9 {
             let ray = rts::render::primary_ray(&world.camera, i, j, 9, 9);
@@ -78,16 +93,32 @@ fn brilliance_and_light_colour_scale_diffuse() {
         up: DVec3::Z * 1e-3,
         ..Default::default()
     };
-    let fin = Finish { brilliance: 3.0, ..matte(0.0, 0.5) };
-    let floor = with_texture(plane(DVec3::Y, 0.0), texture(DVec3::new(1.0, 0.5, 0.25), fin));
+    let fin = Finish {
+        brilliance: 3.0,
+        ..matte(0.0, 0.5)
+    };
+    let floor = with_texture(
+        plane(DVec3::Y, 0.0),
+        texture(DVec3::new(1.0, 0.5, 0.25), fin),
+    );
     let mut sc = scene(cam, vec![floor]);
     let mut l = point_light(DVec3::new(0.0, 1.0, 1.0));
     l.colour = DVec3::new(2.0, 1.0, 1.0);
     sc.lights.push(l);
-    let film = render(&build(&sc), &RenderOptions { width: 1, height: 1 });
+    let film = render(
+        &build(&sc),
+        &RenderOptions {
+            width: 1,
+            height: 1,
+        },
+    );
     let cos = std::f64::consts::FRAC_1_SQRT_2;
     let expect = 0.5 * cos.powi(3) * DVec3::new(2.0, 0.5, 0.25);
-    assert!(close(film.get(0, 0), expect), "{:?} vs {expect:?}", film.get(0, 0));
+    assert!(
+        close(film.get(0, 0), expect),
+        "{:?} vs {expect:?}",
+        film.get(0, 0)
+    );
 }
 
 /// Floor under a blocker, light above: the point under the blocker is lit only by
@@ -108,28 +139,58 @@ fn shadow_scene(no_shadow: bool, shadowless: bool, blocker_y: f64, parallel: boo
     let mut l = point_light(DVec3::new(0.0, 10.0, 0.0));
     l.shadowless = shadowless;
     if parallel {
-        l.kind = LightKind::Parallel { point_at: DVec3::ZERO };
+        l.kind = LightKind::Parallel {
+            point_at: DVec3::ZERO,
+        };
     }
     sc.lights.push(l);
-    render(&build(&sc), &RenderOptions { width: 1, height: 1 }).get(0, 0)
+    render(
+        &build(&sc),
+        &RenderOptions {
+            width: 1,
+            height: 1,
+        },
+    )
+    .get(0, 0)
 }
 
 #[test]
 fn shadows() {
-    assert!(close(shadow_scene(false, false, 2.0, false), DVec3::splat(0.2)));
-    assert!(close(shadow_scene(true, false, 2.0, false), DVec3::splat(0.9)));
-    assert!(close(shadow_scene(false, true, 2.0, false), DVec3::splat(0.9)));
+    assert!(close(
+        shadow_scene(false, false, 2.0, false),
+        DVec3::splat(0.2)
+    ));
+    assert!(close(
+        shadow_scene(true, false, 2.0, false),
+        DVec3::splat(0.9)
+    ));
+    assert!(close(
+        shadow_scene(false, true, 2.0, false),
+        DVec3::splat(0.9)
+    ));
     // A blocker beyond a point light does not shadow.
-    assert!(close(shadow_scene(false, false, 12.0, false), DVec3::splat(0.9)));
+    assert!(close(
+        shadow_scene(false, false, 12.0, false),
+        DVec3::splat(0.9)
+    ));
 }
 
 #[test]
 fn parallel_light_shadows_only_from_before_its_plane() {
     // POV-Ray 3.7: with the light at y = 10 pointing down, a blocker at 9.95 casts
     // a shadow, one at 10.05 does not.
-    assert!(close(shadow_scene(false, false, 2.0, true), DVec3::splat(0.2)));
-    assert!(close(shadow_scene(false, false, 9.8, true), DVec3::splat(0.2)));
-    assert!(close(shadow_scene(false, false, 10.3, true), DVec3::splat(0.9)));
+    assert!(close(
+        shadow_scene(false, false, 2.0, true),
+        DVec3::splat(0.2)
+    ));
+    assert!(close(
+        shadow_scene(false, false, 9.8, true),
+        DVec3::splat(0.2)
+    ));
+    assert!(close(
+        shadow_scene(false, false, 10.3, true),
+        DVec3::splat(0.9)
+    ));
 }
 
 #[test]
@@ -145,9 +206,17 @@ fn parallel_light_direction_is_the_same_everywhere() {
     let floor = with_texture(plane(DVec3::Y, 0.0), texture(DVec3::ONE, matte(0.0, 1.0)));
     let mut sc = scene(cam, vec![floor]);
     let mut l = point_light(DVec3::new(1.0, 1.0, 0.0));
-    l.kind = LightKind::Parallel { point_at: DVec3::ZERO };
+    l.kind = LightKind::Parallel {
+        point_at: DVec3::ZERO,
+    };
     sc.lights.push(l);
-    let film = render(&build(&sc), &RenderOptions { width: 5, height: 5 });
+    let film = render(
+        &build(&sc),
+        &RenderOptions {
+            width: 5,
+            height: 5,
+        },
+    );
     for px in &film.pixels {
         assert!((px.x - std::f64::consts::FRAC_1_SQRT_2).abs() < EPS);
     }
@@ -167,7 +236,13 @@ fn mirror_reflects_the_background() {
     let mirror = with_texture(plane(-DVec3::Z, 0.0), texture(DVec3::ONE, fin));
     let mut sc = scene(cam, vec![mirror]);
     sc.background.rgb = DVec3::new(0.2, 0.4, 0.8);
-    let film = render(&build(&sc), &RenderOptions { width: 3, height: 3 });
+    let film = render(
+        &build(&sc),
+        &RenderOptions {
+            width: 3,
+            height: 3,
+        },
+    );
     for px in &film.pixels {
         assert!(close(*px, DVec3::new(0.2, 0.4, 0.8)), "{px:?}");
     }
@@ -194,7 +269,14 @@ fn facing_mirrors_follow_max_trace_level_and_adc_bailout() {
         sc.background.rgb = DVec3::Z;
         sc.global.max_trace_level = mtl;
         sc.global.adc_bailout = adc;
-        render(&build(&sc), &RenderOptions { width: 1, height: 1 }).get(0, 0)
+        render(
+            &build(&sc),
+            &RenderOptions {
+                width: 1,
+                height: 1,
+            },
+        )
+        .get(0, 0)
     };
     assert!(close(run(1, 0.0), DVec3::new(0.5, 0.0, 0.0)));
     assert!(close(run(2, 0.0), DVec3::new(0.75, 0.0, 0.0)));
@@ -206,7 +288,13 @@ fn facing_mirrors_follow_max_trace_level_and_adc_bailout() {
 #[test]
 fn transformed_sphere_equals_moved_sphere() {
     let cam = square_camera(DVec3::new(0.0, 0.0, -6.0), 0.8);
-    let tex = texture(DVec3::new(0.9, 0.6, 0.3), Finish { phong: 0.7, ..matte(0.1, 0.6) });
+    let tex = texture(
+        DVec3::new(0.9, 0.6, 0.3),
+        Finish {
+            phong: 0.7,
+            ..matte(0.1, 0.6)
+        },
+    );
     let offset = DVec3::new(0.5, -0.25, 1.0);
     let moved = with_texture(sphere(offset, 1.0), tex.clone());
     let transformed = with_transform(
@@ -216,7 +304,13 @@ fn transformed_sphere_equals_moved_sphere() {
     let render_one = |obj| {
         let mut sc = scene(cam, vec![obj]);
         sc.lights.push(point_light(DVec3::new(-5.0, 5.0, -5.0)));
-        render(&build(&sc), &RenderOptions { width: 32, height: 32 })
+        render(
+            &build(&sc),
+            &RenderOptions {
+                width: 32,
+                height: 32,
+            },
+        )
     };
     let (a, b) = (render_one(moved), render_one(transformed));
     for (p, q) in a.pixels.iter().zip(&b.pixels) {

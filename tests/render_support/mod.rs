@@ -3,8 +3,8 @@
 
 use glam::DVec3;
 use rts::scene::{
-    Camera, Colour, Finish, Light, LightKind, Object, ObjectFlags, Pattern, Pigment, Scene,
-    Shape, Texture, Transform,
+    Camera, Colour, Finish, Light, LightKind, Object, ObjectFlags, Pattern, Pigment, Scene, Shape,
+    Texture, Transform,
 };
 use rts::span::Span;
 use std::sync::Arc;
