@@ -13,7 +13,7 @@ use rts::scene::{Camera, Object, Transform};
 fn config(cases: u32) -> Config {
     Config {
         cases,
-        rng_seed: RngSeed::Fixed(0x5eed_0f_b4),
+        rng_seed: RngSeed::Fixed(0x5eed_0fb4),
         failure_persistence: None,
         ..Config::default()
     }

@@ -239,3 +239,89 @@ impl World {
         best
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::{Colour, Finish, Pattern, Pigment};
+    use crate::span::Span;
+
+    fn obj(shape: Shape) -> Object {
+        Object {
+            shape,
+            transform: None,
+            texture: None,
+            flags: ObjectFlags::default(),
+            span: Span::default(),
+        }
+    }
+
+    fn red() -> Arc<Texture> {
+        Arc::new(Texture {
+            pigment: Pigment {
+                pattern: Pattern::Solid(Colour::rgb(1.0, 0.0, 0.0)),
+                transform: None,
+            },
+            finish: Finish::default(),
+        })
+    }
+
+    #[test]
+    fn unions_compose_transforms_and_inherit_textures_and_flags() {
+        let child = Object {
+            transform: Some(Arc::new(Transform::scale(DVec3::splat(2.0)))),
+            ..obj(Shape::Sphere {
+                center: DVec3::X,
+                radius: 1.0,
+            })
+        };
+        let plain = obj(Shape::Box {
+            min: DVec3::ZERO,
+            max: DVec3::ONE,
+        });
+        let mut inner = obj(Shape::Union {
+            children: vec![child, plain],
+        });
+        inner.flags.no_shadow = true;
+        let outer = Object {
+            transform: Some(Arc::new(Transform::translate(DVec3::Y * 10.0))),
+            texture: Some(red()),
+            ..obj(Shape::Union {
+                children: vec![inner],
+            })
+        };
+        let untextured = obj(Shape::Plane {
+            normal: DVec3::Y,
+            distance: 0.0,
+        });
+        let scene = Scene {
+            objects: vec![untextured, outer],
+            ..Scene::default()
+        };
+        let w = build(&scene);
+        assert_eq!(w.primitives.len(), 3);
+        assert_eq!(w.unbounded, vec![2]);
+        // Scale first, then the union's translate: centre (2, 10, 0), radius 2.
+        let s = &w.primitives[0];
+        let b = s.bounds.unwrap();
+        assert!((b.min - DVec3::new(0.0, 8.0, -2.0)).length() < 1e-12);
+        assert!((b.max - DVec3::new(4.0, 12.0, 2.0)).length() < 1e-12);
+        assert_eq!(*s.texture, *red());
+        assert!(s.flags.no_shadow);
+        // Texture space is the union's: world → union is translate(-10 y).
+        let m = s.texture_from_world.unwrap();
+        assert_eq!(m.transform_point3(DVec3::new(1.0, 10.0, 0.0)), DVec3::X);
+        // The plane keeps POV-Ray's default texture: black, ambient 0.1, diffuse 0.6.
+        let plane = &w.primitives[2];
+        assert_eq!(*plane.texture, Texture::default());
+        assert_eq!(plane.texture.finish.diffuse, 0.6);
+        assert!(!plane.flags.no_shadow);
+        assert_eq!(w.bounds, b.union(&w.primitives[1].bounds.unwrap()));
+    }
+
+    #[test]
+    fn world_is_send_and_sync() {
+        fn check<T: Send + Sync>() {}
+        check::<World>();
+    }
+}

@@ -17,6 +17,7 @@ impl Gamma {
         let v = linear.clamp(0.0, 1.0);
         match self {
             Gamma::Srgb if v <= 0.0031308 => 12.92 * v,
+            Gamma::Srgb if v >= 1.0 => 1.0,
             Gamma::Srgb => 1.055 * v.powf(1.0 / 2.4) - 0.055,
             Gamma::Power(1.0) => v,
             Gamma::Power(g) => v.powf(1.0 / g),
@@ -68,6 +69,6 @@ mod tests {
     fn clamps() {
         assert_eq!(to_file(-3.0, None, Gamma::Srgb), 0.0);
         assert_eq!(to_file(7.0, Some(2.2), Gamma::Srgb), 1.0);
-        assert_eq!(to_file(f64::NAN.max(0.0), None, Gamma::Power(1.0)), 0.0);
+        assert_eq!(to_file(f64::NAN, None, Gamma::Power(1.0)), 0.0);
     }
 }
