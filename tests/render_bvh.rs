@@ -145,3 +145,49 @@ fn many_spheres_use_a_real_tree() {
     );
     assert!((hit.unwrap().t - 4.6).abs() < 1e-12);
 }
+
+#[test]
+#[ignore = "timing; run with --ignored --nocapture"]
+fn timing_many_spheres() {
+    use rts::render::{render, RenderOptions};
+    let mut objs = Vec::new();
+    for i in 0..100 {
+        for j in 0..100 {
+            let c = DVec3::new(
+                i as f64 * 0.3 - 15.0,
+                (i * j % 7) as f64 * 0.1,
+                j as f64 * 0.3,
+            );
+            objs.push(with_texture(
+                sphere(c, 0.14),
+                texture(DVec3::ONE, matte(0.1, 0.6)),
+            ));
+        }
+    }
+    let mut sc = scene(
+        Camera {
+            location: DVec3::new(0.0, 5.0, -10.0),
+            direction: DVec3::new(0.0, -0.3, 1.0),
+            right: DVec3::X * 4.0 / 3.0,
+            ..Camera::default()
+        },
+        objs,
+    );
+    sc.lights.push(point_light(DVec3::new(5.0, 20.0, -5.0)));
+    let t = std::time::Instant::now();
+    let w = build(&sc);
+    let tb = t.elapsed();
+    let film = render(
+        &w,
+        &RenderOptions {
+            width: 640,
+            height: 480,
+        },
+    );
+    println!(
+        "build {tb:?}, render {:?}, nodes {}",
+        t.elapsed() - tb,
+        w.bvh.node_count()
+    );
+    assert_eq!(film.pixels.len(), 640 * 480);
+}

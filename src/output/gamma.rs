@@ -25,6 +25,38 @@ impl Gamma {
     }
 }
 
+/// Why a `--gamma` value was rejected.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ParseGammaError(pub String);
+
+impl std::fmt::Display for ParseGammaError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "invalid gamma `{}`: expected `srgb` or a positive number",
+            self.0
+        )
+    }
+}
+
+impl std::error::Error for ParseGammaError {}
+
+impl std::str::FromStr for Gamma {
+    type Err = ParseGammaError;
+
+    /// `srgb` (any case) or a positive number such as `1.0` or `2.2`.
+    fn from_str(s: &str) -> Result<Gamma, ParseGammaError> {
+        let t = s.trim();
+        if t.eq_ignore_ascii_case("srgb") {
+            return Ok(Gamma::Srgb);
+        }
+        match t.parse::<f64>() {
+            Ok(g) if g.is_finite() && g > 0.0 => Ok(Gamma::Power(g)),
+            _ => Err(ParseGammaError(s.to_string())),
+        }
+    }
+}
+
 /// A working-space value under `assumed_gamma` (`None` meaning 1.0, as POV-Ray 3.7
 /// does when the scene says nothing) to linear light; negatives become 0.
 pub fn decode_working(value: f64, assumed_gamma: Option<f64>) -> f64 {
@@ -63,6 +95,19 @@ mod tests {
         assert_eq!(q8(to_file(0.5, Some(2.2), Gamma::Power(1.0))), 55);
         // File_Gamma 2.2 → 186.
         assert_eq!(q8(to_file(0.5, Some(1.0), Gamma::Power(2.2))), 186);
+    }
+
+    #[test]
+    fn parses() {
+        assert_eq!("sRGB".parse(), Ok(Gamma::Srgb));
+        assert_eq!("1.0".parse(), Ok(Gamma::Power(1.0)));
+        assert_eq!(" 2.2".parse(), Ok(Gamma::Power(2.2)));
+        assert!("0".parse::<Gamma>().is_err());
+        assert!("linear"
+            .parse::<Gamma>()
+            .unwrap_err()
+            .to_string()
+            .contains("linear"));
     }
 
     #[test]

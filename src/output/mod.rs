@@ -2,7 +2,7 @@
 
 mod gamma;
 
-pub use gamma::{decode_working, to_file, Gamma};
+pub use gamma::{decode_working, to_file, Gamma, ParseGammaError};
 
 use crate::render::Film;
 use image::codecs::png::PngEncoder;
