@@ -3,9 +3,12 @@
 //! The modules follow the pipeline:
 //! `source → syntax::parse → AST → eval::eval → scene → build::build → render::render → output::write`.
 
-pub mod scene;
-pub mod span;
+pub mod build;
 pub mod diag;
 pub mod eval;
+pub mod output;
+pub mod render;
+pub mod scene;
 pub mod source;
+pub mod span;
 pub mod syntax;

@@ -1,0 +1,327 @@
+//! Turns a [`Scene`] into a [`World`]: a flat list of primitives with resolved
+//! transforms and textures, and a BVH over the bounded ones.
+//!
+//! Texture space: a texture is evaluated in the object space of the object that
+//! owns it (the leaf itself, or the nearest enclosing union a texture was inherited
+//! from), then through the pigment's own transform. So a union's texture does not
+//! move with its children's own transforms, as in POV-Ray.
+
+mod aabb;
+mod bvh;
+mod ray;
+mod shape;
+
+pub use aabb::Aabb;
+pub use bvh::Bvh;
+pub use ray::{surface_offset, Ray};
+pub use shape::{Hit, PrimShape, Primitive};
+
+use crate::scene::{
+    Camera, GlobalSettings, Light, Object, ObjectFlags, Scene, Shape, Texture, Transform,
+};
+use glam::DVec3;
+use std::sync::Arc;
+
+/// What a ray is for, which decides the objects it can see.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RayKind {
+    /// From the camera: `no_image` objects are invisible.
+    Camera,
+    /// A reflected ray: `no_reflection` objects are invisible.
+    Reflected,
+    /// A shadow ray: `no_shadow` objects are invisible.
+    Shadow,
+}
+
+impl RayKind {
+    /// Whether an object with `flags` can be hit by this kind of ray.
+    #[inline]
+    pub fn sees(self, flags: &ObjectFlags) -> bool {
+        match self {
+            RayKind::Camera => !flags.no_image,
+            RayKind::Reflected => !flags.no_reflection,
+            RayKind::Shadow => !flags.no_shadow,
+        }
+    }
+}
+
+/// A scene ready for rendering: immutable, `Send + Sync`.
+#[derive(Clone, Debug)]
+pub struct World {
+    /// The camera.
+    pub camera: Camera,
+    /// Light sources.
+    pub lights: Vec<Light>,
+    /// Colour of rays that hit nothing.
+    pub background: DVec3,
+    /// Global settings.
+    pub global: GlobalSettings,
+    /// Every primitive, bounded ones first.
+    pub primitives: Vec<Primitive>,
+    /// Indices of the unbounded primitives (planes), tested on every ray.
+    pub unbounded: Vec<u32>,
+    /// Hierarchy over the bounded primitives.
+    pub bvh: Bvh,
+    /// Bounds of all bounded primitives (empty when there are none).
+    pub bounds: Aabb,
+}
+
+/// Flattens `scene` and builds its acceleration structure.
+pub fn build(scene: &Scene) -> World {
+    let mut prims = Vec::new();
+    let default_texture = Arc::new(Texture::default());
+    let inherited = Inherited {
+        texture: default_texture,
+        texture_space: None,
+        flags: ObjectFlags::default(),
+    };
+    for obj in &scene.objects {
+        flatten(obj, None, &inherited, &mut prims);
+    }
+    // Bounded first keeps BVH indices dense; order is otherwise file order.
+    prims.sort_by_key(|p: &Primitive| p.bounds.is_none());
+    let items: Vec<(u32, Aabb)> = prims
+        .iter()
+        .enumerate()
+        .filter_map(|(i, p)| p.bounds.map(|b| (i as u32, b)))
+        .collect();
+    let bvh = Bvh::build(&items);
+    let unbounded = (items.len() as u32..prims.len() as u32).collect();
+    World {
+        camera: scene.camera,
+        lights: scene.lights.clone(),
+        background: scene.background.rgb,
+        global: scene.global.clone(),
+        bounds: bvh.bounds(),
+        primitives: prims,
+        unbounded,
+        bvh,
+    }
+}
+
+/// What a child takes from its enclosing objects.
+struct Inherited {
+    texture: Arc<Texture>,
+    /// `world_from_owner` of the object the texture belongs to.
+    texture_space: Option<Transform>,
+    flags: ObjectFlags,
+}
+
+fn or_flags(a: ObjectFlags, b: ObjectFlags) -> ObjectFlags {
+    ObjectFlags {
+        no_shadow: a.no_shadow || b.no_shadow,
+        no_image: a.no_image || b.no_image,
+        no_reflection: a.no_reflection || b.no_reflection,
+        inverse: a.inverse != b.inverse,
+    }
+}
+
+/// Appends the primitives of `obj`, whose parent maps to world by `parent`.
+fn flatten(obj: &Object, parent: Option<&Transform>, inh: &Inherited, out: &mut Vec<Primitive>) {
+    let world_from_obj = match (obj.transform.as_deref(), parent) {
+        (None, p) => p.copied(),
+        (Some(t), None) => Some(*t),
+        (Some(t), Some(p)) => Some(t.then(p)),
+    };
+    let here = Inherited {
+        texture: obj.texture.clone().unwrap_or_else(|| inh.texture.clone()),
+        texture_space: if obj.texture.is_some() {
+            world_from_obj
+        } else {
+            inh.texture_space
+        },
+        flags: or_flags(inh.flags, obj.flags),
+    };
+    let shape = match &obj.shape {
+        Shape::Union { children } => {
+            for c in children {
+                flatten(c, world_from_obj.as_ref(), &here, out);
+            }
+            return;
+        }
+        Shape::Sphere { center, radius } => PrimShape::Sphere {
+            center: *center,
+            radius: *radius,
+        },
+        Shape::Plane { normal, distance } => PrimShape::Plane {
+            normal: *normal,
+            distance: *distance,
+        },
+        Shape::Box { min, max } => PrimShape::Box {
+            min: min.min(*max),
+            max: max.max(*min),
+        },
+        Shape::Triangle { vertices } => {
+            let v = vertices.map(|p| world_from_obj.map_or(p, |t| t.point(p)));
+            let (a, e1, e2) = (v[0], v[1] - v[0], v[2] - v[0]);
+            let prim_shape = PrimShape::Triangle { a, e1, e2 };
+            out.push(primitive(prim_shape, None, &here));
+            return;
+        }
+    };
+    out.push(primitive(shape, world_from_obj, &here));
+}
+
+fn primitive(shape: PrimShape, transform: Option<Transform>, inh: &Inherited) -> Primitive {
+    let transform = transform.filter(|t| *t != Transform::IDENTITY);
+    Primitive {
+        bounds: Primitive::compute_bounds(&shape, transform.as_ref()),
+        shape,
+        transform,
+        texture: inh.texture.clone(),
+        texture_from_world: inh.texture_space.map(|t| t.inverse),
+        flags: inh.flags,
+    }
+}
+
+impl World {
+    /// The nearest hit in `(t_min, t_max)` among primitives `kind` can see.
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64, kind: RayKind) -> Option<Hit> {
+        let mut best: Option<Hit> = None;
+        let mut t_max = t_max;
+        for &i in &self.unbounded {
+            let p = &self.primitives[i as usize];
+            if kind.sees(&p.flags) {
+                if let Some(t) = p.intersect(ray, t_min, t_max) {
+                    t_max = t;
+                    best = Some(Hit { t, prim: i });
+                }
+            }
+        }
+        self.bvh.traverse(ray, t_min, t_max, |i, t_max| {
+            let p = &self.primitives[i as usize];
+            if kind.sees(&p.flags) {
+                if let Some(t) = p.intersect(ray, t_min, t_max) {
+                    best = Some(Hit { t, prim: i });
+                    return Some(t);
+                }
+            }
+            Some(t_max)
+        });
+        best
+    }
+
+    /// Whether any shadow-casting primitive lies on `ray` within `(t_min, t_max)`.
+    pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        let kind = RayKind::Shadow;
+        let hit_by = |i: u32| {
+            let p = &self.primitives[i as usize];
+            kind.sees(&p.flags) && p.intersect(ray, t_min, t_max).is_some()
+        };
+        if self.unbounded.iter().any(|&i| hit_by(i)) {
+            return true;
+        }
+        let mut found = false;
+        self.bvh.traverse(ray, t_min, t_max, |i, t_max| {
+            found = hit_by(i);
+            (!found).then_some(t_max)
+        });
+        found
+    }
+
+    /// [`World::intersect`] by testing every primitive: the reference the BVH is
+    /// checked against.
+    pub fn intersect_brute_force(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        kind: RayKind,
+    ) -> Option<Hit> {
+        let mut best: Option<Hit> = None;
+        for (i, p) in self.primitives.iter().enumerate() {
+            if kind.sees(&p.flags) {
+                if let Some(t) = p.intersect(ray, t_min, best.map_or(t_max, |h| h.t)) {
+                    best = Some(Hit { t, prim: i as u32 });
+                }
+            }
+        }
+        best
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::{Colour, Finish, Pattern, Pigment};
+    use crate::span::Span;
+
+    fn obj(shape: Shape) -> Object {
+        Object {
+            shape,
+            transform: None,
+            texture: None,
+            flags: ObjectFlags::default(),
+            span: Span::default(),
+        }
+    }
+
+    fn red() -> Arc<Texture> {
+        Arc::new(Texture {
+            pigment: Pigment {
+                pattern: Pattern::Solid(Colour::rgb(1.0, 0.0, 0.0)),
+                transform: None,
+            },
+            finish: Finish::default(),
+        })
+    }
+
+    #[test]
+    fn unions_compose_transforms_and_inherit_textures_and_flags() {
+        let child = Object {
+            transform: Some(Arc::new(Transform::scale(DVec3::splat(2.0)))),
+            ..obj(Shape::Sphere {
+                center: DVec3::X,
+                radius: 1.0,
+            })
+        };
+        let plain = obj(Shape::Box {
+            min: DVec3::ZERO,
+            max: DVec3::ONE,
+        });
+        let mut inner = obj(Shape::Union {
+            children: vec![child, plain],
+        });
+        inner.flags.no_shadow = true;
+        let outer = Object {
+            transform: Some(Arc::new(Transform::translate(DVec3::Y * 10.0))),
+            texture: Some(red()),
+            ..obj(Shape::Union {
+                children: vec![inner],
+            })
+        };
+        let untextured = obj(Shape::Plane {
+            normal: DVec3::Y,
+            distance: 0.0,
+        });
+        let scene = Scene {
+            objects: vec![untextured, outer],
+            ..Scene::default()
+        };
+        let w = build(&scene);
+        assert_eq!(w.primitives.len(), 3);
+        assert_eq!(w.unbounded, vec![2]);
+        // Scale first, then the union's translate: centre (2, 10, 0), radius 2.
+        let s = &w.primitives[0];
+        let b = s.bounds.unwrap();
+        assert!((b.min - DVec3::new(0.0, 8.0, -2.0)).length() < 1e-12);
+        assert!((b.max - DVec3::new(4.0, 12.0, 2.0)).length() < 1e-12);
+        assert_eq!(*s.texture, *red());
+        assert!(s.flags.no_shadow);
+        // Texture space is the union's: world → union is translate(-10 y).
+        let m = s.texture_from_world.unwrap();
+        assert_eq!(m.transform_point3(DVec3::new(1.0, 10.0, 0.0)), DVec3::X);
+        // The plane keeps POV-Ray's default texture: black, ambient 0.1, diffuse 0.6.
+        let plane = &w.primitives[2];
+        assert_eq!(*plane.texture, Texture::default());
+        assert_eq!(plane.texture.finish.diffuse, 0.6);
+        assert!(!plane.flags.no_shadow);
+        assert_eq!(w.bounds, b.union(&w.primitives[1].bounds.unwrap()));
+    }
+
+    #[test]
+    fn world_is_send_and_sync() {
+        fn check<T: Send + Sync>() {}
+        check::<World>();
+    }
+}

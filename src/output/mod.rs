@@ -1,0 +1,123 @@
+//! Writing a [`Film`] to an image file.
+
+mod gamma;
+
+pub use gamma::{decode_working, to_file, Gamma, ParseGammaError};
+
+use crate::render::Film;
+use image::codecs::png::PngEncoder;
+use image::{ExtendedColorType, ImageEncoder};
+use std::fmt;
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+
+/// Bits per channel in the written file.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum BitDepth {
+    /// 8 bits per channel (the default).
+    #[default]
+    Eight,
+    /// 16 bits per channel.
+    Sixteen,
+}
+
+/// How to encode the film.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct OutputOptions {
+    /// The file's transfer function (`--gamma`; sRGB by default, like POV-Ray 3.7).
+    pub gamma: Gamma,
+    /// Bits per channel.
+    pub bit_depth: BitDepth,
+    /// The scene's `assumed_gamma` (the working space the film is in); `None`
+    /// behaves as 1.0.
+    pub assumed_gamma: Option<f64>,
+}
+
+/// Why an image could not be written.
+#[derive(Debug)]
+pub struct OutputError {
+    /// The file that was being written.
+    pub path: PathBuf,
+    /// What went wrong.
+    pub source: Box<dyn std::error::Error + Send + Sync + 'static>,
+}
+
+impl fmt::Display for OutputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "cannot write image `{}`: {}",
+            self.path.display(),
+            self.source
+        )
+    }
+}
+
+impl std::error::Error for OutputError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        Some(&*self.source)
+    }
+}
+
+/// The file samples of `film`, RGB interleaved, rows from the top, in [0, 1].
+pub fn encode_samples(film: &Film, opts: &OutputOptions) -> Vec<f64> {
+    film.pixels
+        .iter()
+        .flat_map(|c| c.to_array())
+        .map(|v| to_file(v, opts.assumed_gamma, opts.gamma))
+        .collect()
+}
+
+/// Writes `film` as a PNG at `path`, atomically: the image goes to a temporary
+/// file in the same directory which is then renamed over `path`.
+pub fn write(film: &Film, path: &Path, opts: &OutputOptions) -> Result<(), OutputError> {
+    let err = |e: Box<dyn std::error::Error + Send + Sync>| OutputError {
+        path: path.to_path_buf(),
+        source: e,
+    };
+    let samples = encode_samples(film, opts);
+    let (bytes, colour) = match opts.bit_depth {
+        BitDepth::Eight => (
+            samples
+                .iter()
+                .map(|v| (v * 255.0).round() as u8)
+                .collect::<Vec<u8>>(),
+            ExtendedColorType::Rgb8,
+        ),
+        BitDepth::Sixteen => (
+            samples
+                .iter()
+                .flat_map(|v| ((v * 65535.0).round() as u16).to_ne_bytes())
+                .collect(),
+            ExtendedColorType::Rgb16,
+        ),
+    };
+    let tmp = temp_path(path);
+    let result = (|| -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
+        let file = File::create(&tmp)?;
+        let mut out = BufWriter::new(file);
+        PngEncoder::new(&mut out).write_image(&bytes, film.width, film.height, colour)?;
+        out.flush()?;
+        out.get_ref().sync_all()?;
+        drop(out);
+        std::fs::rename(&tmp, path)?;
+        Ok(())
+    })();
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result.map_err(err)
+}
+
+/// `dir/.name.tmp-PID` next to `path`.
+fn temp_path(path: &Path) -> PathBuf {
+    let name = path
+        .file_name()
+        .map_or_else(|| "image".into(), |n| n.to_string_lossy().into_owned());
+    let tmp = format!(".{name}.tmp-{}", std::process::id());
+    match path.parent() {
+        Some(dir) => dir.join(tmp),
+        None => PathBuf::from(tmp),
+    }
+}

@@ -1,0 +1,319 @@
+//! Analytic checks of the shading model.
+
+mod render_support;
+
+use glam::DVec3;
+use render_support::*;
+use rts::build::build;
+use rts::render::{render, RenderOptions};
+use rts::scene::{Finish, LightKind, Reflection, Transform};
+
+const EPS: f64 = 1e-12;
+
+fn close(a: DVec3, b: DVec3) -> bool {
+    (a - b).abs().max_element() < 1e-9
+}
+
+#[test]
+fn flat_sphere_covers_exactly_the_pixels_inside_its_silhouette() {
+    // Camera at z = -10 looking at a unit sphere: a pixel is covered exactly when
+    // its ray passes closer than 1 to the centre.
+    let cam = square_camera(DVec3::new(0.0, 0.0, -10.0), 0.5);
+    let s = with_texture(
+        sphere(DVec3::ZERO, 1.0),
+        texture(DVec3::splat(0.5), matte(1.0, 0.0)),
+    );
+    let world = build(&scene(cam, vec![s]));
+    let (w, h) = (41, 41);
+    let film = render(
+        &world,
+        &RenderOptions {
+            width: w,
+            height: h,
+        },
+    );
+    for j in 0..h {
+        for i in 0..w {
+            // The ray direction through the pixel, and its distance from the centre.
+            let u = (i as f64 + 0.5) / w as f64 - 0.5;
+            let v = 0.5 - (j as f64 + 0.5) / h as f64;
+            let d = DVec3::new(u * 0.5, v * 0.5, 1.0).normalize();
+            let o = DVec3::new(0.0, 0.0, -10.0);
+            let miss_dist = (o - d * o.dot(d)).length();
+            let px = film.get(i, j);
+            if miss_dist < 1.0 - 1e-9 {
+                assert_eq!(px, DVec3::splat(0.5), "pixel {i},{j} inside");
+            } else if miss_dist > 1.0 + 1e-9 {
+                assert_eq!(px, DVec3::ZERO, "pixel {i},{j} outside");
+            }
+        }
+    }
+    assert_eq!(film.get(20, 20), DVec3::splat(0.5));
+    assert_eq!(film.get(0, 0), DVec3::ZERO);
+}
+
+#[test]
+fn diffuse_of_a_plane_is_n_dot_l() {
+    // Floor y = 0 seen from above; light off to the side, far away.
+    let cam = rts::scene::Camera {
+        location: DVec3::new(0.0, 5.0, 0.0),
+        direction: -DVec3::Y,
+        right: DVec3::X,
+        up: DVec3::Z,
+        ..Default::default()
+    };
+    let floor = with_texture(plane(DVec3::Y, 0.0), texture(DVec3::ONE, matte(0.0, 1.0)));
+    let mut sc = scene(cam, vec![floor]);
+    let light = DVec3::new(3.0, 4.0, 1.0);
+    sc.lights.push(point_light(light));
+    let world = build(&sc);
+    let film = render(
+        &world,
+        &RenderOptions {
+            width: 9,
+            height: 9,
+        },
+    );
+    for j in 0..9 {
+        for i in 0..9 {
+            let ray = rts::render::primary_ray(&world.camera, i, j, 9, 9);
+            let p = ray.at(5.0 / -ray.dir.y);
+            let expect = (light - p).normalize().y;
+            assert!((film.get(i, j).x - expect).abs() < EPS, "{i},{j}");
+        }
+    }
+}
+
+#[test]
+fn brilliance_and_light_colour_scale_diffuse() {
+    let cam = rts::scene::Camera {
+        location: DVec3::new(0.0, 1.0, 0.0),
+        direction: -DVec3::Y,
+        right: DVec3::X * 1e-3,
+        up: DVec3::Z * 1e-3,
+        ..Default::default()
+    };
+    let fin = Finish {
+        brilliance: 3.0,
+        ..matte(0.0, 0.5)
+    };
+    let floor = with_texture(
+        plane(DVec3::Y, 0.0),
+        texture(DVec3::new(1.0, 0.5, 0.25), fin),
+    );
+    let mut sc = scene(cam, vec![floor]);
+    let mut l = point_light(DVec3::new(0.0, 1.0, 1.0));
+    l.colour = DVec3::new(2.0, 1.0, 1.0);
+    sc.lights.push(l);
+    let film = render(
+        &build(&sc),
+        &RenderOptions {
+            width: 1,
+            height: 1,
+        },
+    );
+    let cos = std::f64::consts::FRAC_1_SQRT_2;
+    let expect = 0.5 * cos.powi(3) * DVec3::new(2.0, 0.5, 0.25);
+    assert!(
+        close(film.get(0, 0), expect),
+        "{:?} vs {expect:?}",
+        film.get(0, 0)
+    );
+}
+
+/// Floor under a blocker, light above: the point under the blocker is lit only by
+/// ambient; with `no_shadow` or a `shadowless` light it is lit fully.
+fn shadow_scene(no_shadow: bool, shadowless: bool, blocker_y: f64, parallel: bool) -> DVec3 {
+    let cam = rts::scene::Camera {
+        location: DVec3::new(0.0, 0.5, 0.0),
+        direction: -DVec3::Y,
+        right: DVec3::X * 1e-3,
+        up: DVec3::Z * 1e-3,
+        ..Default::default()
+    };
+    let floor = with_texture(plane(DVec3::Y, 0.0), texture(DVec3::ONE, matte(0.2, 0.7)));
+    let mut blocker = sphere(DVec3::new(0.0, blocker_y, 0.0), 0.25);
+    blocker.flags.no_shadow = no_shadow;
+    blocker.flags.no_image = true;
+    let mut sc = scene(cam, vec![floor, blocker]);
+    let mut l = point_light(DVec3::new(0.0, 10.0, 0.0));
+    l.shadowless = shadowless;
+    if parallel {
+        l.kind = LightKind::Parallel {
+            point_at: DVec3::ZERO,
+        };
+    }
+    sc.lights.push(l);
+    render(
+        &build(&sc),
+        &RenderOptions {
+            width: 1,
+            height: 1,
+        },
+    )
+    .get(0, 0)
+}
+
+#[test]
+fn shadows() {
+    assert!(close(
+        shadow_scene(false, false, 2.0, false),
+        DVec3::splat(0.2)
+    ));
+    assert!(close(
+        shadow_scene(true, false, 2.0, false),
+        DVec3::splat(0.9)
+    ));
+    assert!(close(
+        shadow_scene(false, true, 2.0, false),
+        DVec3::splat(0.9)
+    ));
+    // A blocker beyond a point light does not shadow.
+    assert!(close(
+        shadow_scene(false, false, 12.0, false),
+        DVec3::splat(0.9)
+    ));
+}
+
+#[test]
+fn parallel_light_shadows_only_from_before_its_plane() {
+    // POV-Ray 3.7: with the light at y = 10 pointing down, a blocker at 9.95 casts
+    // a shadow, one at 10.05 does not.
+    assert!(close(
+        shadow_scene(false, false, 2.0, true),
+        DVec3::splat(0.2)
+    ));
+    assert!(close(
+        shadow_scene(false, false, 9.8, true),
+        DVec3::splat(0.2)
+    ));
+    assert!(close(
+        shadow_scene(false, false, 10.3, true),
+        DVec3::splat(0.9)
+    ));
+}
+
+#[test]
+fn parallel_light_direction_is_the_same_everywhere() {
+    // A floor lit by a parallel light at 45°: every pixel gets diffuse cos 45°.
+    let cam = rts::scene::Camera {
+        location: DVec3::new(0.0, 1.0, 0.0),
+        direction: -DVec3::Y,
+        right: DVec3::X * 4.0,
+        up: DVec3::Z * 4.0,
+        ..Default::default()
+    };
+    let floor = with_texture(plane(DVec3::Y, 0.0), texture(DVec3::ONE, matte(0.0, 1.0)));
+    let mut sc = scene(cam, vec![floor]);
+    let mut l = point_light(DVec3::new(1.0, 1.0, 0.0));
+    l.kind = LightKind::Parallel {
+        point_at: DVec3::ZERO,
+    };
+    sc.lights.push(l);
+    let film = render(
+        &build(&sc),
+        &RenderOptions {
+            width: 5,
+            height: 5,
+        },
+    );
+    for px in &film.pixels {
+        assert!((px.x - std::f64::consts::FRAC_1_SQRT_2).abs() < EPS);
+    }
+}
+
+#[test]
+fn mirror_reflects_the_background() {
+    let cam = square_camera(DVec3::new(0.0, 0.0, -3.0), 0.1);
+    let fin = Finish {
+        reflection: Reflection {
+            min: DVec3::ONE,
+            max: DVec3::ONE,
+            ..Reflection::default()
+        },
+        ..matte(0.0, 0.0)
+    };
+    let mirror = with_texture(plane(-DVec3::Z, 0.0), texture(DVec3::ONE, fin));
+    let mut sc = scene(cam, vec![mirror]);
+    sc.background.rgb = DVec3::new(0.2, 0.4, 0.8);
+    let film = render(
+        &build(&sc),
+        &RenderOptions {
+            width: 3,
+            height: 3,
+        },
+    );
+    for px in &film.pixels {
+        assert!(close(*px, DVec3::new(0.2, 0.4, 0.8)), "{px:?}");
+    }
+}
+
+#[test]
+fn facing_mirrors_follow_max_trace_level_and_adc_bailout() {
+    // POV-Ray 3.7, two facing mirrors (ambient 0.5 red, reflection 0.5), camera
+    // between them: level n gives sum of 0.5^k for k = 1..n; adc 0.1 stops after 4.
+    let run = |mtl: u32, adc: f64| {
+        let cam = square_camera(DVec3::ZERO, 1e-3);
+        let fin = Finish {
+            reflection: Reflection {
+                min: DVec3::splat(0.5),
+                max: DVec3::splat(0.5),
+                ..Reflection::default()
+            },
+            ..matte(0.5, 0.0)
+        };
+        let tex = texture(DVec3::X, fin);
+        let a = with_texture(plane(DVec3::Z, 1.0), tex.clone());
+        let b = with_texture(plane(DVec3::Z, -1.0), tex);
+        let mut sc = scene(cam, vec![a, b]);
+        sc.background.rgb = DVec3::Z;
+        sc.global.max_trace_level = mtl;
+        sc.global.adc_bailout = adc;
+        render(
+            &build(&sc),
+            &RenderOptions {
+                width: 1,
+                height: 1,
+            },
+        )
+        .get(0, 0)
+    };
+    assert!(close(run(1, 0.0), DVec3::new(0.5, 0.0, 0.0)));
+    assert!(close(run(2, 0.0), DVec3::new(0.75, 0.0, 0.0)));
+    assert!(close(run(5, 0.0), DVec3::new(0.96875, 0.0, 0.0)));
+    assert!(close(run(10, 0.1), DVec3::new(0.9375, 0.0, 0.0)));
+    assert!(close(run(10, 0.2), DVec3::new(0.875, 0.0, 0.0)));
+}
+
+#[test]
+fn transformed_sphere_equals_moved_sphere() {
+    let cam = square_camera(DVec3::new(0.0, 0.0, -6.0), 0.8);
+    let tex = texture(
+        DVec3::new(0.9, 0.6, 0.3),
+        Finish {
+            phong: 0.7,
+            ..matte(0.1, 0.6)
+        },
+    );
+    let offset = DVec3::new(0.5, -0.25, 1.0);
+    let moved = with_texture(sphere(offset, 1.0), tex.clone());
+    let transformed = with_transform(
+        with_texture(sphere(DVec3::ZERO, 1.0), tex),
+        Transform::translate(offset),
+    );
+    let render_one = |obj| {
+        let mut sc = scene(cam, vec![obj]);
+        sc.lights.push(point_light(DVec3::new(-5.0, 5.0, -5.0)));
+        render(
+            &build(&sc),
+            &RenderOptions {
+                width: 32,
+                height: 32,
+            },
+        )
+    };
+    let (a, b) = (render_one(moved), render_one(transformed));
+    for (p, q) in a.pixels.iter().zip(&b.pixels) {
+        assert!((*p - *q).abs().max_element() < 1e-9, "{p:?} vs {q:?}");
+    }
+}
