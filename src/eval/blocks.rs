@@ -1,6 +1,6 @@
 //! Dispatch from a block's keyword to the code that evaluates it.
 
-use super::cursor::Cursor;
+use super::cursor::{Cursor, Sink};
 use super::value::Value;
 use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
@@ -41,9 +41,9 @@ impl Evaluator<'_> {
             };
             return Err(d.into());
         }
-        let mut toks = Vec::new();
+        let mut toks = Sink::new();
         self.expand(&b.items, &mut toks);
-        let mut c = Cursor::new(toks, kw, b.span);
+        let mut c = Cursor::new(toks.toks, kw, b.span);
         Ok(Some(match kw {
             "sphere" | "plane" | "box" | "triangle" | "union" | "object" => {
                 Value::Object(std::sync::Arc::new(self.object(&mut c)?))

@@ -43,6 +43,32 @@ impl Tok {
     }
 }
 
+/// Where expanded items go: a block's list, or (at top level) straight into the scene,
+/// so a loop that makes a million objects never holds them all as items.
+pub(crate) struct Sink {
+    /// Items not yet placed or consumed.
+    pub(crate) toks: Vec<Tok>,
+    /// Whether items are placed in the scene as soon as they are produced.
+    pub(crate) top: bool,
+}
+
+impl Sink {
+    /// A sink that collects items for a block.
+    pub(crate) fn new() -> Sink {
+        Sink { toks: Vec::new(), top: false }
+    }
+
+    /// A sink that places items in the scene.
+    pub(crate) fn top() -> Sink {
+        Sink { toks: Vec::new(), top: true }
+    }
+
+    /// Adds an item.
+    pub(crate) fn push(&mut self, t: Tok) {
+        self.toks.push(t);
+    }
+}
+
 /// The items of one block being consumed.
 pub(crate) struct Cursor {
     toks: std::vec::IntoIter<Tok>,

@@ -1,6 +1,6 @@
 //! The directives: `#declare`, `#if`, loops, `#macro`, `#include`, messages, `#default`.
 
-use super::cursor::{Cursor, Tok};
+use super::cursor::{Cursor, Sink, Tok};
 use super::value::Value;
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
@@ -11,7 +11,7 @@ use std::sync::Arc;
 
 impl Evaluator<'_> {
     /// Runs one directive; block directives expand their chosen bodies into `out`.
-    pub(crate) fn directive(&mut self, d: &Directive, out: &mut Vec<Tok>) -> R<()> {
+    pub(crate) fn directive(&mut self, d: &Directive, out: &mut Sink) -> R<()> {
         match &d.kind {
             DirectiveKind::Declare { local, target, value } => {
                 let v = match value {
@@ -207,9 +207,9 @@ impl Evaluator<'_> {
                 Ok(())
             }
             DirectiveKind::Default(items) => {
-                let mut toks = Vec::new();
+                let mut toks = Sink::new();
                 self.expand(items, &mut toks);
-                let mut c = Cursor::new(toks, "#default", d.span);
+                let mut c = Cursor::new(toks.toks, "#default", d.span);
                 while let Some(t) = c.next() {
                     let mut tex = (*self.default_texture).clone();
                     match t {

@@ -1,7 +1,7 @@
 //! `#include`: finding files (the including file's folder, then `-I` folders, then the
 //! built-in library), the read sandbox, cycles and depth.
 
-use super::cursor::Tok;
+use super::cursor::Sink;
 use super::{Evaluator, R};
 use crate::diag::{codes, did_you_mean, Diagnostic, Label};
 use crate::source::SourceMap;
@@ -45,7 +45,7 @@ pub fn load_file(sources: &mut SourceMap, path: &Path, name: String) -> Result<F
 
 impl Evaluator<'_> {
     /// Runs `#include "name"` written at `span` (the directive at `dspan`).
-    pub(crate) fn include(&mut self, name: &str, span: Span, dspan: Span, out: &mut Vec<Tok>) -> R<()> {
+    pub(crate) fn include(&mut self, name: &str, span: Span, dspan: Span, out: &mut Sink) -> R<()> {
         if self.include_stack.len() > self.options.max_include_depth {
             self.stopped = true;
             return Err(Diagnostic::error(

@@ -1,6 +1,6 @@
 //! Expanding items into evaluated [`Tok`]s, placing them in the scene, and macros.
 
-use super::cursor::Tok;
+use super::cursor::{Sink, Tok};
 use super::value::Value;
 use super::{builtins, Evaluator, Fail, R};
 use crate::diag::{codes, did_you_mean, Diagnostic, Label};
@@ -13,29 +13,27 @@ use std::sync::Arc;
 impl Evaluator<'_> {
     /// Runs top-level items, placing what they produce in the scene.
     pub(crate) fn run_top(&mut self, items: &[Item]) {
-        let mut toks = Vec::new();
-        for item in items {
-            if self.stopped {
-                return;
-            }
-            self.expand_item(item, &mut toks);
-            for t in toks.drain(..) {
-                self.place(t);
-            }
-        }
+        let mut sink = Sink::top();
+        self.expand(items, &mut sink);
     }
 
     /// Expands items into `out`, running directives as they come.
-    pub(crate) fn expand(&mut self, items: &[Item], out: &mut Vec<Tok>) {
+    pub(crate) fn expand(&mut self, items: &[Item], out: &mut Sink) {
         for item in items {
             if self.stopped {
                 return;
             }
             self.expand_item(item, out);
+            if out.top {
+                let toks = std::mem::take(&mut out.toks);
+                for t in toks {
+                    self.place(t);
+                }
+            }
         }
     }
 
-    fn expand_item(&mut self, item: &Item, out: &mut Vec<Tok>) {
+    fn expand_item(&mut self, item: &Item, out: &mut Sink) {
         match item {
             Item::Directive(d) => {
                 if let Err(f) = self.directive(d, out) {
@@ -52,9 +50,9 @@ impl Evaluator<'_> {
             },
             Item::Keyword(k) => out.push(Tok::Kw(k.name, k.span)),
             Item::Bracket(b) => {
-                let mut inner = Vec::new();
+                let mut inner = Sink::new();
                 self.expand(&b.items, &mut inner);
-                out.push(Tok::Bracket(inner, b.span));
+                out.push(Tok::Bracket(inner.toks, b.span));
             }
             Item::Comma(s) => out.push(Tok::Comma(*s)),
             Item::Semicolon(s) => out.push(Tok::Semi(*s)),
@@ -150,7 +148,7 @@ impl Evaluator<'_> {
     }
 
     /// Expands a macro call into `out`.
-    pub(crate) fn call_macro(&mut self, m: &Rc<MacroDef>, args: &[Arg], call: Span, out: &mut Vec<Tok>) -> R<()> {
+    pub(crate) fn call_macro(&mut self, m: &Rc<MacroDef>, args: &[Arg], call: Span, out: &mut Sink) -> R<()> {
         let required = m.params.iter().filter(|p| !p.optional).count();
         if args.len() < required || args.len() > m.params.len() {
             let want = if required == m.params.len() {
@@ -211,7 +209,7 @@ impl Evaluator<'_> {
     /// A call in an expression: a built-in function or a macro that yields one value.
     pub(crate) fn call_value(&mut self, name: Sym, name_span: Span, args: &[Arg], span: Span) -> R<Value> {
         if name.is_builtin() && builtins::is_function(name.0 as usize) {
-            if &*name.name() == "defined" {
+            if builtins::BUILTIN_NAMES[name.0 as usize] == "defined" {
                 return self.defined(args, span);
             }
             let mut vals = Vec::with_capacity(args.len());
@@ -224,9 +222,9 @@ impl Evaluator<'_> {
             return self.call_builtin(name.0 as usize, span, &vals);
         }
         if let Some(m) = self.lookup_macro(name) {
-            let mut out = Vec::new();
+            let mut out = Sink::new();
             self.call_macro(&m, args, span, &mut out)?;
-            let mut vals = out.into_iter().filter(|t| !matches!(t, Tok::Semi(_)));
+            let mut vals = out.toks.into_iter().filter(|t| !matches!(t, Tok::Semi(_)));
             return match (vals.next(), vals.next()) {
                 (Some(Tok::Val(v, _) | Tok::Block(_, v, _)), None) => match v {
                     Value::Poison => Err(Fail::silent()),
