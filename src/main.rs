@@ -10,7 +10,11 @@ fn main() {
     let cli = match parsed {
         Ok(c) => c,
         Err(e) => {
-            let code = if e.use_stderr() { cli::EXIT_USAGE } else { cli::EXIT_OK };
+            let code = if e.use_stderr() {
+                cli::EXIT_USAGE
+            } else {
+                cli::EXIT_OK
+            };
             let _ = e.print();
             std::process::exit(code);
         }
@@ -22,7 +26,9 @@ fn main() {
     let code = match worker.map(std::thread::JoinHandle::join) {
         Ok(Ok(code)) => code,
         _ => {
-            eprintln!("error: rts stopped unexpectedly; please report this with the scene that caused it");
+            eprintln!(
+                "error: rts stopped unexpectedly; please report this with the scene that caused it"
+            );
             cli::EXIT_ERRORS
         }
     };

@@ -5,7 +5,10 @@ use std::path::Path;
 use std::process::Command;
 
 fn rts(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_rts")).args(args).output().expect("run rts");
+    let out = Command::new(env!("CARGO_BIN_EXE_rts"))
+        .args(args)
+        .output()
+        .expect("run rts");
     (
         out.status.code().unwrap_or(-1),
         String::from_utf8_lossy(&out.stdout).into_owned(),
@@ -37,7 +40,8 @@ fn codes(name: &str, text: &str) -> Vec<String> {
 
 #[test]
 fn every_example_checks_and_renders() {
-    for entry in std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("examples")).unwrap() {
+    for entry in std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("examples")).unwrap()
+    {
         let p = entry.unwrap().path();
         if p.extension().and_then(|e| e.to_str()) != Some("rts") {
             continue;
@@ -45,8 +49,21 @@ fn every_example_checks_and_renders() {
         let s = p.display().to_string();
         let (code, _, err) = rts(&["check", &s]);
         assert_eq!(code, 0, "{s}: {err}");
-        let out = std::env::temp_dir().join(format!("rts-smoke-{}.png", p.file_stem().unwrap().to_string_lossy()));
-        let (code, _, err) = rts(&["render", &s, "-o", &out.display().to_string(), "-W", "64", "-H", "48", "-q"]);
+        let out = std::env::temp_dir().join(format!(
+            "rts-smoke-{}.png",
+            p.file_stem().unwrap().to_string_lossy()
+        ));
+        let (code, _, err) = rts(&[
+            "render",
+            &s,
+            "-o",
+            &out.display().to_string(),
+            "-W",
+            "64",
+            "-H",
+            "48",
+            "-q",
+        ]);
         assert_eq!(code, 0, "{s}: {err}");
         assert!(std::fs::metadata(&out).unwrap().len() > 100);
     }
@@ -73,11 +90,16 @@ fn json_has_the_documented_fields() {
     assert_eq!(v["line"], 2);
     assert_eq!(v["column"], 19);
     assert_eq!(v["end_column"], 20);
-    for k in ["severity", "message", "file", "end_line", "help", "labels", "notes"] {
+    for k in [
+        "severity", "message", "file", "end_line", "help", "labels", "notes",
+    ] {
         assert!(v.get(k).is_some(), "missing {k}");
     }
     let (_, short, _) = rts(&["check", &p, "--message-format", "short"]);
-    assert!(short.contains(":2:19: error[rts::eval::unknown_identifier]: unknown identifier `B`"), "{short}");
+    assert!(
+        short.contains(":2:19: error[rts::eval::unknown_identifier]: unknown identifier `B`"),
+        "{short}"
+    );
 }
 
 #[test]
@@ -92,48 +114,87 @@ fn each_diagnostic_class() {
         ("#delcare A = 1;", "rts::syntax::unknown_directive"),
         ("sphere { <0,0,0> 1 * }", "rts::syntax::expected"),
         ("#declare A = Undeclared;", "rts::eval::unknown_identifier"),
-        ("sphere { 0, 1 finish { phong_sise 3 } }", "rts::eval::unknown_identifier"),
-        ("sphere { 0, 1 finish { phong 1 checker } }", "rts::eval::unknown_parameter"),
+        (
+            "sphere { 0, 1 finish { phong_sise 3 } }",
+            "rts::eval::unknown_identifier",
+        ),
+        (
+            "sphere { 0, 1 finish { phong 1 checker } }",
+            "rts::eval::unknown_parameter",
+        ),
         ("#declare A = sqrt(\"x\");", "rts::eval::type_mismatch"),
         ("#macro M(A) #end M(1, 2)", "rts::eval::arity"),
-        ("#macro M(A, A) #end", "rts::eval::duplicate_macro_parameter"),
+        (
+            "#macro M(A, A) #end",
+            "rts::eval::duplicate_macro_parameter",
+        ),
         ("#declare A = 1 / 0;", "rts::eval::division_by_zero"),
         ("#declare A = sqrt(-1);", "rts::eval::domain_error"),
         ("#declare A = ln(0);", "rts::eval::domain_error"),
-        ("#declare A = array[2] {1, 2}; #declare B = A[2];", "rts::eval::index_out_of_range"),
-        ("#declare A = 1; #declare B = A.x;", "rts::eval::bad_component"),
+        (
+            "#declare A = array[2] {1, 2}; #declare B = A[2];",
+            "rts::eval::index_out_of_range",
+        ),
+        (
+            "#declare A = 1; #declare B = A.x;",
+            "rts::eval::bad_component",
+        ),
         ("sphere { 0, -1 }", "rts::eval::invalid_size"),
         ("#error \"stop\"", "rts::scene::error"),
         ("#include \"missing.inc\"", "rts::io::file_not_found"),
         ("#include \"/etc/hostname\"", "rts::io::file_not_allowed"),
         ("#while (1) #end", "rts::limit::loop_iterations"),
         ("#macro R() R() #end R()", "rts::limit::macro_recursion"),
-        ("finish { phong 1 phong 2 }", "rts::eval::duplicate_parameter"),
+        (
+            "finish { phong 1 phong 2 }",
+            "rts::eval::duplicate_parameter",
+        ),
         ("sphere { 0, 1 scale 0 }", "rts::eval::degenerate_transform"),
     ];
     for (i, (text, code)) in cases.iter().enumerate() {
         let got = codes(&format!("case{i}.rts"), text);
-        assert!(got.iter().any(|c| c == code), "{text}: expected {code}, got {got:?}");
+        assert!(
+            got.iter().any(|c| c == code),
+            "{text}: expected {code}, got {got:?}"
+        );
     }
 }
 
 #[test]
 fn nesting_and_invalid_utf8_are_diagnostics() {
-    let deep = format!("#declare A = {}1{};", "(".repeat(20_000), ")".repeat(20_000));
+    let deep = format!(
+        "#declare A = {}1{};",
+        "(".repeat(20_000),
+        ")".repeat(20_000)
+    );
     assert_eq!(codes("deep.rts", &deep), vec!["rts::limit::nesting_depth"]);
     let dir = std::env::temp_dir().join(format!("rts-cli-{}", std::process::id()));
     let p = dir.join("utf8.rts");
     std::fs::write(&p, b"#declare A = 1;\xff\n").unwrap();
-    let (code, out, _) = rts(&["check", &p.display().to_string(), "--message-format", "short"]);
+    let (code, out, _) = rts(&[
+        "check",
+        &p.display().to_string(),
+        "--message-format",
+        "short",
+    ]);
     assert_eq!(code, 1);
-    assert!(out.contains("rts::source::invalid_utf8") && out.contains("offset 15"), "{out}");
+    assert!(
+        out.contains("rts::source::invalid_utf8") && out.contains("offset 15"),
+        "{out}"
+    );
 }
 
 #[test]
 fn several_independent_errors_in_one_run() {
-    let got = codes("many.rts", "#declare A = B1;\n#declare C = 1/0;\nsphere { 0, -2 }\n");
+    let got = codes(
+        "many.rts",
+        "#declare A = B1;\n#declare C = 1/0;\nsphere { 0, -2 }\n",
+    );
     assert_eq!(got.len(), 3, "{got:?}");
-    let got = codes("syn.rts", "sphere { <0,0,0> 1 * }\nplane { y, 0 }\nbox { 0, 1 + }\n");
+    let got = codes(
+        "syn.rts",
+        "sphere { <0,0,0> 1 * }\nplane { y, 0 }\nbox { 0, 1 + }\n",
+    );
     assert_eq!(got.len(), 2, "{got:?}");
 }
 
@@ -141,21 +202,72 @@ fn several_independent_errors_in_one_run() {
 fn include_chain_and_macro_call_site_are_noted() {
     let inc = write("inner.inc", "#declare Z = 1;\nsphere { 0, -1 }\n");
     let _ = inc;
-    let main = write("outer.rts", "#include \"inner.inc\"\n#macro M() sphere { 0, -3 } #end\nM()\n");
+    let main = write(
+        "outer.rts",
+        "#include \"inner.inc\"\n#macro M() sphere { 0, -3 } #end\nM()\n",
+    );
     let (code, out, _) = rts(&["check", &main, "--message-format", "json"]);
     assert_eq!(code, 1);
-    let lines: Vec<serde_json::Value> = out.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let lines: Vec<serde_json::Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
     assert!(lines[0]["file"].as_str().unwrap().ends_with("inner.inc"));
-    assert!(lines[0]["notes"].to_string().contains("included from here"), "{}", lines[0]);
-    assert!(lines[1]["notes"].to_string().contains("in macro `M` called here"), "{}", lines[1]);
+    assert!(
+        lines[0]["notes"].to_string().contains("included from here"),
+        "{}",
+        lines[0]
+    );
+    assert!(
+        lines[1]["notes"]
+            .to_string()
+            .contains("in macro `M` called here"),
+        "{}",
+        lines[1]
+    );
 }
 
 #[test]
 fn same_bytes_on_one_and_many_threads() {
-    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/showcase.rts").display().to_string();
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("examples/showcase.rts")
+        .display()
+        .to_string();
     let a = std::env::temp_dir().join("rts-t1.png");
     let b = std::env::temp_dir().join("rts-t4.png");
-    assert_eq!(rts(&["render", &scene, "-o", &a.display().to_string(), "-W", "96", "-H", "72", "--threads", "1", "-q"]).0, 0);
-    assert_eq!(rts(&["render", &scene, "-o", &b.display().to_string(), "-W", "96", "-H", "72", "--threads", "4", "-q"]).0, 0);
+    assert_eq!(
+        rts(&[
+            "render",
+            &scene,
+            "-o",
+            &a.display().to_string(),
+            "-W",
+            "96",
+            "-H",
+            "72",
+            "--threads",
+            "1",
+            "-q"
+        ])
+        .0,
+        0
+    );
+    assert_eq!(
+        rts(&[
+            "render",
+            &scene,
+            "-o",
+            &b.display().to_string(),
+            "-W",
+            "96",
+            "-H",
+            "72",
+            "--threads",
+            "4",
+            "-q"
+        ])
+        .0,
+        0
+    );
     assert_eq!(std::fs::read(a).unwrap(), std::fs::read(b).unwrap());
 }

@@ -27,7 +27,11 @@ pub fn run(args: &CheckArgs) -> i32 {
     for path in &args.scenes {
         match common::load(path, &options) {
             Ok(loaded) => {
-                common::print(&loaded.diagnostics, &loaded.sources, args.scene.message_format);
+                common::print(
+                    &loaded.diagnostics,
+                    &loaded.sources,
+                    args.scene.message_format,
+                );
                 failed |= rts::diag::has_errors(&loaded.diagnostics);
             }
             Err(e) => {

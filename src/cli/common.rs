@@ -26,7 +26,10 @@ pub fn eval_options(args: &SceneArgs, width: u32, height: u32) -> Result<EvalOpt
             return Err(format!("-D {d}: expected NAME=VALUE"));
         };
         let name = name.trim();
-        if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') || name.starts_with(|c: char| c.is_ascii_digit()) {
+        if name.is_empty()
+            || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+            || name.starts_with(|c: char| c.is_ascii_digit())
+        {
             return Err(format!("-D {d}: `{name}` is not a valid name"));
         }
         defines.push((name.to_string(), value.to_string()));

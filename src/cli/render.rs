@@ -43,7 +43,10 @@ pub struct RenderArgs {
 
 /// Renders the scene.
 pub fn run(args: &RenderArgs) -> i32 {
-    if args.width == 0 || args.height == 0 || u64::from(args.width) * u64::from(args.height) > MAX_PIXELS {
+    if args.width == 0
+        || args.height == 0
+        || u64::from(args.width) * u64::from(args.height) > MAX_PIXELS
+    {
         eprintln!(
             "error[{}]: image size {}x{} is outside 1x1 to {MAX_PIXELS} pixels",
             rts::diag::codes::IMAGE_SIZE,
@@ -57,10 +60,18 @@ pub fn run(args: &RenderArgs) -> i32 {
         return EXIT_USAGE;
     }
     let output = args.output.clone().unwrap_or_else(|| {
-        let stem = args.scene_file.file_stem().map_or("render".into(), |s| s.to_string_lossy().into_owned());
+        let stem = args
+            .scene_file
+            .file_stem()
+            .map_or("render".into(), |s| s.to_string_lossy().into_owned());
         PathBuf::from(format!("{stem}.png"))
     });
-    match output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
+    match output
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
+        .as_deref()
+    {
         Some("png") => {}
         other => {
             eprintln!(
@@ -86,7 +97,11 @@ pub fn run(args: &RenderArgs) -> i32 {
             return EXIT_ERRORS;
         }
     };
-    common::print(&loaded.diagnostics, &loaded.sources, args.scene.message_format);
+    common::print(
+        &loaded.diagnostics,
+        &loaded.sources,
+        args.scene.message_format,
+    );
     let Some(scene) = loaded.scene else {
         return EXIT_ERRORS;
     };
@@ -106,7 +121,10 @@ pub fn run(args: &RenderArgs) -> i32 {
         (film, t_build, t2.elapsed(), world.global.assumed_gamma)
     };
     let (film, t_build, t_trace, assumed_gamma) = match args.threads {
-        Some(n) => match rayon::ThreadPoolBuilder::new().num_threads(n.max(1)).build() {
+        Some(n) => match rayon::ThreadPoolBuilder::new()
+            .num_threads(n.max(1))
+            .build()
+        {
             Ok(pool) => pool.install(job),
             Err(e) => {
                 eprintln!("error: cannot start {n} threads: {e}");
@@ -117,7 +135,11 @@ pub fn run(args: &RenderArgs) -> i32 {
     };
     let out = OutputOptions {
         gamma: args.gamma,
-        bit_depth: if args.bit_depth == 16 { BitDepth::Sixteen } else { BitDepth::Eight },
+        bit_depth: if args.bit_depth == 16 {
+            BitDepth::Sixteen
+        } else {
+            BitDepth::Eight
+        },
         assumed_gamma,
     };
     if let Err(e) = rts::output::write(&film, &output, &out) {

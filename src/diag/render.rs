@@ -106,7 +106,10 @@ impl Report {
         let mut related = Vec::new();
         for l in &diag.labels {
             if l.span.file == diag.span.file {
-                labels.push(LabeledSpan::new_with_span(Some(l.message.clone()), miette_span(l.span)));
+                labels.push(LabeledSpan::new_with_span(
+                    Some(l.message.clone()),
+                    miette_span(l.span),
+                ));
             } else {
                 related.push(Report::note(l, sources));
             }
@@ -148,7 +151,10 @@ impl Report {
             severity: miette::Severity::Advice,
             help: None,
             source: NamedSource::new(file.name.clone(), file.text.clone()),
-            labels: vec![LabeledSpan::new_primary_with_span(None, miette_span(label.span))],
+            labels: vec![LabeledSpan::new_primary_with_span(
+                None,
+                miette_span(label.span),
+            )],
             related: Vec::new(),
         }
     }
@@ -168,13 +174,17 @@ impl std::error::Error for Report {}
 
 impl miette::Diagnostic for Report {
     fn code<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
-        self.code.as_ref().map(|c| Box::new(c) as Box<dyn fmt::Display>)
+        self.code
+            .as_ref()
+            .map(|c| Box::new(c) as Box<dyn fmt::Display>)
     }
     fn severity(&self) -> Option<miette::Severity> {
         Some(self.severity)
     }
     fn help<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
-        self.help.as_ref().map(|h| Box::new(h) as Box<dyn fmt::Display>)
+        self.help
+            .as_ref()
+            .map(|h| Box::new(h) as Box<dyn fmt::Display>)
     }
     fn source_code(&self) -> Option<&dyn miette::SourceCode> {
         Some(&self.source)
@@ -186,7 +196,9 @@ impl miette::Diagnostic for Report {
         if self.related.is_empty() {
             None
         } else {
-            Some(Box::new(self.related.iter().map(|r| r as &dyn miette::Diagnostic)))
+            Some(Box::new(
+                self.related.iter().map(|r| r as &dyn miette::Diagnostic),
+            ))
         }
     }
 }

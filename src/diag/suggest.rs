@@ -19,7 +19,10 @@ fn distance(a: &str, b: &str) -> usize {
 
 /// The candidate closest to `word`, if it is close enough to be a likely typo
 /// (distance at most a third of the word's length, and at least 1 allowed).
-pub fn did_you_mean<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+pub fn did_you_mean<'a>(
+    word: &str,
+    candidates: impl IntoIterator<Item = &'a str>,
+) -> Option<&'a str> {
     let limit = (word.chars().count() / 3).max(1);
     candidates
         .into_iter()
@@ -36,7 +39,10 @@ mod tests {
 
     #[test]
     fn suggests_close_words_only() {
-        assert_eq!(did_you_mean("phongsize", ["phong_size", "phong"]), Some("phong_size"));
+        assert_eq!(
+            did_you_mean("phongsize", ["phong_size", "phong"]),
+            Some("phong_size")
+        );
         assert_eq!(did_you_mean("spehre", ["sphere", "plane"]), Some("sphere"));
         assert_eq!(did_you_mean("xyzzy", ["sphere", "plane"]), None);
         assert_eq!(distance("abc", "abc"), 0);

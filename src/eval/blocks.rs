@@ -8,17 +8,68 @@ use crate::syntax::ast::Block;
 
 /// Blocks this release evaluates.
 const BLOCKS: &[&str] = &[
-    "sphere", "plane", "box", "triangle", "union", "object", "texture", "pigment", "finish", "reflection",
-    "camera", "light_source", "transform", "global_settings", "background",
+    "sphere",
+    "plane",
+    "box",
+    "triangle",
+    "union",
+    "object",
+    "texture",
+    "pigment",
+    "finish",
+    "reflection",
+    "camera",
+    "light_source",
+    "transform",
+    "global_settings",
+    "background",
 ];
 
 /// POV-Ray blocks that a later release implements.
 const LATER_BLOCKS: &[&str] = &[
-    "cylinder", "cone", "torus", "disc", "smooth_triangle", "polygon", "mesh", "mesh2", "polyhedron", "merge",
-    "intersection", "difference", "blob", "height_field", "isosurface", "julia_fractal", "lathe", "prism", "sor",
-    "superellipsoid", "text", "sphere_sweep", "bicubic_patch", "quadric", "normal", "interior", "material",
-    "color_map", "colour_map", "pigment_map", "normal_map", "texture_map", "sky_sphere", "fog", "media",
-    "photons", "radiosity", "spline", "light_group", "image_map", "area_light", "bounded_by", "clipped_by",
+    "cylinder",
+    "cone",
+    "torus",
+    "disc",
+    "smooth_triangle",
+    "polygon",
+    "mesh",
+    "mesh2",
+    "polyhedron",
+    "merge",
+    "intersection",
+    "difference",
+    "blob",
+    "height_field",
+    "isosurface",
+    "julia_fractal",
+    "lathe",
+    "prism",
+    "sor",
+    "superellipsoid",
+    "text",
+    "sphere_sweep",
+    "bicubic_patch",
+    "quadric",
+    "normal",
+    "interior",
+    "material",
+    "color_map",
+    "colour_map",
+    "pigment_map",
+    "normal_map",
+    "texture_map",
+    "sky_sphere",
+    "fog",
+    "media",
+    "photons",
+    "radiosity",
+    "spline",
+    "light_group",
+    "image_map",
+    "area_light",
+    "bounded_by",
+    "clipped_by",
 ];
 
 /// Whether `k` opens a block (`k { … }`).
@@ -32,12 +83,22 @@ impl Evaluator<'_> {
         let kw = b.keyword.name;
         if !BLOCKS.contains(&kw) {
             let d = if LATER_BLOCKS.contains(&kw) {
-                Diagnostic::error(codes::UNSUPPORTED, b.keyword.span, format!("`{kw}` is not implemented in rts yet"))
-                    .with_label("POV-Ray feature not yet supported")
-                    .with_help("see docs/language.md for what this release supports")
+                Diagnostic::error(
+                    codes::UNSUPPORTED,
+                    b.keyword.span,
+                    format!("`{kw}` is not implemented in rts yet"),
+                )
+                .with_label("POV-Ray feature not yet supported")
+                .with_help("see docs/language.md for what this release supports")
             } else {
-                Diagnostic::error(codes::UNEXPECTED_ITEM, b.keyword.span, format!("`{kw}` does not take a `{{ }}` block"))
-                    .with_help(format!("write `{kw}` followed by its value, without braces"))
+                Diagnostic::error(
+                    codes::UNEXPECTED_ITEM,
+                    b.keyword.span,
+                    format!("`{kw}` does not take a `{{ }}` block"),
+                )
+                .with_help(format!(
+                    "write `{kw}` followed by its value, without braces"
+                ))
             };
             return Err(d.into());
         }
@@ -75,7 +136,10 @@ impl Evaluator<'_> {
                 b.span,
                 format!("`{}` has no value to declare or pass", b.keyword.name),
             )
-            .with_help(format!("write `{} {{ … }}` at top level instead", b.keyword.name))
+            .with_help(format!(
+                "write `{} {{ … }}` at top level instead",
+                b.keyword.name
+            ))
             .into()),
         }
     }

@@ -11,15 +11,84 @@ use std::rc::Rc;
 /// that a symbol's number is its index here.
 pub const BUILTIN_NAMES: &[&str] = &[
     // constants
-    "pi", "tau", "x", "y", "z", "t", "u", "v", "true", "false", "on", "off", "yes", "no", "clock",
-    "clock_delta", "clock_on", "frame_number", "initial_frame", "final_frame", "initial_clock",
-    "final_clock", "image_width", "image_height", "version",
+    "pi",
+    "tau",
+    "x",
+    "y",
+    "z",
+    "t",
+    "u",
+    "v",
+    "true",
+    "false",
+    "on",
+    "off",
+    "yes",
+    "no",
+    "clock",
+    "clock_delta",
+    "clock_on",
+    "frame_number",
+    "initial_frame",
+    "final_frame",
+    "initial_clock",
+    "final_clock",
+    "image_width",
+    "image_height",
+    "version",
     // functions
-    "abs", "acos", "asin", "atan", "atan2", "ceil", "cos", "cosh", "degrees", "radians", "div", "exp",
-    "floor", "int", "ln", "log", "max", "min", "mod", "pow", "sin", "sinh", "sqrt", "tan", "tanh",
-    "select", "vlength", "vnormalize", "vdot", "vcross", "vrotate", "vaxis_rotate", "seed", "rand",
-    "str", "concat", "strlen", "substr", "chr", "asc", "val", "acosh", "asinh", "atanh", "strupr",
-    "strlwr", "vstr", "dimensions", "dimension_size", "defined", "bitwise_and", "bitwise_or",
+    "abs",
+    "acos",
+    "asin",
+    "atan",
+    "atan2",
+    "ceil",
+    "cos",
+    "cosh",
+    "degrees",
+    "radians",
+    "div",
+    "exp",
+    "floor",
+    "int",
+    "ln",
+    "log",
+    "max",
+    "min",
+    "mod",
+    "pow",
+    "sin",
+    "sinh",
+    "sqrt",
+    "tan",
+    "tanh",
+    "select",
+    "vlength",
+    "vnormalize",
+    "vdot",
+    "vcross",
+    "vrotate",
+    "vaxis_rotate",
+    "seed",
+    "rand",
+    "str",
+    "concat",
+    "strlen",
+    "substr",
+    "chr",
+    "asc",
+    "val",
+    "acosh",
+    "asinh",
+    "atanh",
+    "strupr",
+    "strlwr",
+    "vstr",
+    "dimensions",
+    "dimension_size",
+    "defined",
+    "bitwise_and",
+    "bitwise_or",
     "bitwise_xor",
 ];
 
@@ -65,7 +134,12 @@ impl Evaluator<'_> {
     }
 
     /// Calls built-in function `index` with evaluated arguments.
-    pub(crate) fn call_builtin(&mut self, index: usize, call: Span, args: &[(Value, Span)]) -> R<Value> {
+    pub(crate) fn call_builtin(
+        &mut self,
+        index: usize,
+        call: Span,
+        args: &[(Value, Span)],
+    ) -> R<Value> {
         let name = BUILTIN_NAMES[index];
         let arity = |lo: usize, hi: usize| -> R<()> {
             if args.len() < lo || args.len() > hi {
@@ -79,7 +153,11 @@ impl Evaluator<'_> {
                 return Err(Diagnostic::error(
                     codes::ARITY,
                     call,
-                    format!("`{name}` takes {want} argument{}, found {}", if want == "1" { "" } else { "s" }, args.len()),
+                    format!(
+                        "`{name}` takes {want} argument{}, found {}",
+                        if want == "1" { "" } else { "s" },
+                        args.len()
+                    ),
                 )
                 .with_help(format!("call it as {}", signature(name)))
                 .into());
@@ -114,7 +192,11 @@ impl Evaluator<'_> {
                 if !(-1.0..=1.0).contains(&a) {
                     return Err(domain(0, "needs a value from -1 to 1"));
                 }
-                Ok(Value::Float(if name == "acos" { a.acos() } else { a.asin() }))
+                Ok(Value::Float(if name == "acos" {
+                    a.acos()
+                } else {
+                    a.asin()
+                }))
             }
             "atan" => float1(f64::atan),
             "atan2" => {
@@ -170,20 +252,36 @@ impl Evaluator<'_> {
                 arity(2, 2)?;
                 let (a, b) = (f(0)?, f(1)?);
                 if b == 0.0 {
-                    return Err(Diagnostic::error(codes::DIVISION_BY_ZERO, args[1].1, format!("`{name}` by zero"))
-                        .with_label("this is 0")
-                        .into());
+                    return Err(Diagnostic::error(
+                        codes::DIVISION_BY_ZERO,
+                        args[1].1,
+                        format!("`{name}` by zero"),
+                    )
+                    .with_label("this is 0")
+                    .into());
                 }
-                Ok(Value::Float(if name == "div" { (a / b).trunc() } else { a % b }))
+                Ok(Value::Float(if name == "div" {
+                    (a / b).trunc()
+                } else {
+                    a % b
+                }))
             }
             "pow" => {
                 arity(2, 2)?;
                 let (a, b) = (f(0)?, f(1)?);
                 if a == 0.0 && b < 0.0 {
-                    return Err(Diagnostic::error(codes::DIVISION_BY_ZERO, call, "`pow(0, negative)` divides by zero").into());
+                    return Err(Diagnostic::error(
+                        codes::DIVISION_BY_ZERO,
+                        call,
+                        "`pow(0, negative)` divides by zero",
+                    )
+                    .into());
                 }
                 if a < 0.0 && b.fract() != 0.0 {
-                    return Err(domain(0, "of a negative number to a fractional power is not real"));
+                    return Err(domain(
+                        0,
+                        "of a negative number to a fractional power is not real",
+                    ));
                 }
                 Ok(Value::Float(a.powf(b)))
             }
@@ -192,7 +290,11 @@ impl Evaluator<'_> {
                 let mut acc = f(0)?;
                 for i in 1..args.len() {
                     let b = f(i)?;
-                    acc = if name == "max" { acc.max(b) } else { acc.min(b) };
+                    acc = if name == "max" {
+                        acc.max(b)
+                    } else {
+                        acc.min(b)
+                    };
                 }
                 Ok(Value::Float(acc))
             }
@@ -266,14 +368,22 @@ impl Evaluator<'_> {
             "rand" => {
                 arity(1, 1)?;
                 let id = f(0)?;
-                let slot = usize::try_from(id as i64).ok().filter(|i| *i < self.rand_streams.len() && id.fract() == 0.0);
+                let slot = usize::try_from(id as i64)
+                    .ok()
+                    .filter(|i| *i < self.rand_streams.len() && id.fract() == 0.0);
                 let Some(i) = slot else {
-                    return Err(Diagnostic::error(codes::TYPE_MISMATCH, args[0].1, "`rand` needs a stream made by `seed`")
-                        .with_help("write `#declare S = seed(42);` and then `rand(S)`")
-                        .into());
+                    return Err(Diagnostic::error(
+                        codes::TYPE_MISMATCH,
+                        args[0].1,
+                        "`rand` needs a stream made by `seed`",
+                    )
+                    .with_help("write `#declare S = seed(42);` and then `rand(S)`")
+                    .into());
                 };
                 self.rand_streams[i] = splitmix(self.rand_streams[i]);
-                Ok(Value::Float((self.rand_streams[i] >> 11) as f64 / (1u64 << 53) as f64))
+                Ok(Value::Float(
+                    (self.rand_streams[i] >> 11) as f64 / (1u64 << 53) as f64,
+                ))
             }
             "str" => {
                 arity(3, 3)?;
@@ -291,7 +401,8 @@ impl Evaluator<'_> {
                 };
                 let sep = self.to_str(&args[2].0, args[2].1)?;
                 let (l, p) = (f(3)?, f(4)?);
-                let parts: Vec<String> = comps.iter().take(n).map(|c| format_str(*c, l, p)).collect();
+                let parts: Vec<String> =
+                    comps.iter().take(n).map(|c| format_str(*c, l, p)).collect();
                 Ok(Value::Str(Rc::from(parts.join(&sep))))
             }
             "concat" => {
@@ -304,12 +415,18 @@ impl Evaluator<'_> {
             }
             "strlen" => {
                 arity(1, 1)?;
-                Ok(Value::Float(self.to_str(&args[0].0, args[0].1)?.chars().count() as f64))
+                Ok(Value::Float(
+                    self.to_str(&args[0].0, args[0].1)?.chars().count() as f64,
+                ))
             }
             "strupr" | "strlwr" => {
                 arity(1, 1)?;
                 let s = self.to_str(&args[0].0, args[0].1)?;
-                Ok(Value::Str(Rc::from(if name == "strupr" { s.to_uppercase() } else { s.to_lowercase() })))
+                Ok(Value::Str(Rc::from(if name == "strupr" {
+                    s.to_uppercase()
+                } else {
+                    s.to_lowercase()
+                })))
             }
             "substr" => {
                 arity(3, 3)?;
@@ -325,7 +442,12 @@ impl Evaluator<'_> {
                     .with_help("positions start at 1; the start plus the length minus 1 must not pass the end")
                     .into());
                 }
-                Ok(Value::Str(Rc::from(s.chars().skip(p as usize - 1).take(l as usize).collect::<String>())))
+                Ok(Value::Str(Rc::from(
+                    s.chars()
+                        .skip(p as usize - 1)
+                        .take(l as usize)
+                        .collect::<String>(),
+                )))
             }
             "chr" => {
                 arity(1, 1)?;
@@ -338,7 +460,9 @@ impl Evaluator<'_> {
             "asc" => {
                 arity(1, 1)?;
                 let s = self.to_str(&args[0].0, args[0].1)?;
-                Ok(Value::Float(s.chars().next().map_or(0.0, |c| f64::from(u32::from(c)))))
+                Ok(Value::Float(
+                    s.chars().next().map_or(0.0, |c| f64::from(u32::from(c))),
+                ))
             }
             "val" => {
                 arity(1, 1)?;
@@ -346,7 +470,11 @@ impl Evaluator<'_> {
                 let t = s.trim();
                 let end = t
                     .char_indices()
-                    .take_while(|(i, c)| c.is_ascii_digit() || matches!(c, '.' | 'e' | 'E') || (*i == 0 && matches!(c, '-' | '+')))
+                    .take_while(|(i, c)| {
+                        c.is_ascii_digit()
+                            || matches!(c, '.' | 'e' | 'E')
+                            || (*i == 0 && matches!(c, '-' | '+'))
+                    })
                     .count();
                 Ok(Value::Float(t[..end].parse::<f64>().unwrap_or(0.0)))
             }
@@ -390,7 +518,12 @@ impl Evaluator<'_> {
                 Ok(Value::Float(acc as f64))
             }
             // `defined` is handled before arguments are evaluated.
-            _ => Err(Diagnostic::error(codes::TYPE_MISMATCH, call, format!("`{name}` is not a function")).into()),
+            _ => Err(Diagnostic::error(
+                codes::TYPE_MISMATCH,
+                call,
+                format!("`{name}` is not a function"),
+            )
+            .into()),
         }
     }
 }
@@ -438,7 +571,12 @@ fn format_str(v: f64, l: f64, p: f64) -> String {
         let neg = body.starts_with('-');
         let digits = body.trim_start_matches('-');
         let pad = width.saturating_sub(body.len());
-        format!("{}{}{}", if neg { "-" } else { "" }, "0".repeat(pad), digits)
+        format!(
+            "{}{}{}",
+            if neg { "-" } else { "" },
+            "0".repeat(pad),
+            digits
+        )
     } else {
         format!("{body:>width$}")
     }
@@ -451,4 +589,3 @@ fn splitmix(mut z: u64) -> u64 {
     z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
     z ^ (z >> 31)
 }
-

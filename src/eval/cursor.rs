@@ -26,7 +26,12 @@ pub(crate) enum Tok {
 impl Tok {
     pub(crate) fn span(&self) -> Span {
         match self {
-            Tok::Kw(_, s) | Tok::Val(_, s) | Tok::Block(_, _, s) | Tok::Comma(s) | Tok::Semi(s) | Tok::Bracket(_, s) => *s,
+            Tok::Kw(_, s)
+            | Tok::Val(_, s)
+            | Tok::Block(_, _, s)
+            | Tok::Comma(s)
+            | Tok::Semi(s)
+            | Tok::Bracket(_, s) => *s,
         }
     }
 
@@ -55,12 +60,18 @@ pub(crate) struct Sink {
 impl Sink {
     /// A sink that collects items for a block.
     pub(crate) fn new() -> Sink {
-        Sink { toks: Vec::new(), top: false }
+        Sink {
+            toks: Vec::new(),
+            top: false,
+        }
     }
 
     /// A sink that places items in the scene.
     pub(crate) fn top() -> Sink {
-        Sink { toks: Vec::new(), top: true }
+        Sink {
+            toks: Vec::new(),
+            top: true,
+        }
     }
 
     /// Adds an item.
@@ -92,7 +103,10 @@ impl Cursor {
             peeked: None,
             block,
             span,
-            last: Span { end: span.start, ..span.head() },
+            last: Span {
+                end: span.start,
+                ..span.head()
+            },
             seen: Vec::new(),
             poisoned: false,
         }
@@ -104,7 +118,9 @@ impl Cursor {
         if let Some(t) = &t {
             self.last = t.span();
             match t {
-                Tok::Val(Value::Poison, _) | Tok::Block(_, Value::Poison, _) => self.poisoned = true,
+                Tok::Val(Value::Poison, _) | Tok::Block(_, Value::Poison, _) => {
+                    self.poisoned = true
+                }
                 Tok::Kw(..) | Tok::Block(..) => self.poisoned = false,
                 _ => {}
             }
@@ -142,13 +158,20 @@ impl Cursor {
             },
             Some(other) => {
                 let (desc, span) = (other.describe(), other.span());
-                Err(Diagnostic::error(codes::MISSING_VALUE, span, format!("expected {what}, found {desc}"))
-                    .with_label(format!("{what} should come before this"))
-                    .into())
+                Err(Diagnostic::error(
+                    codes::MISSING_VALUE,
+                    span,
+                    format!("expected {what}, found {desc}"),
+                )
+                .with_label(format!("{what} should come before this"))
+                .into())
             }
             None => Err(Diagnostic::error(
                 codes::MISSING_VALUE,
-                Span { start: self.span.end.saturating_sub(1), ..self.span },
+                Span {
+                    start: self.span.end.saturating_sub(1),
+                    ..self.span
+                },
                 format!("expected {what} in `{}`", self.block),
             )
             .with_label(format!("{what} is missing"))
@@ -160,10 +183,14 @@ impl Cursor {
     /// Records keyword `kw` as given; a second time is reported as a duplicate.
     pub(crate) fn once(&mut self, kw: &'static str, span: Span) -> R<()> {
         if self.seen.contains(&kw) {
-            return Err(Diagnostic::error(codes::DUPLICATE_PARAMETER, span, format!("`{kw}` is given twice in this `{}`", self.block))
-                .with_label("second time")
-                .with_help(format!("remove one of the `{kw}`s"))
-                .into());
+            return Err(Diagnostic::error(
+                codes::DUPLICATE_PARAMETER,
+                span,
+                format!("`{kw}` is given twice in this `{}`", self.block),
+            )
+            .with_label("second time")
+            .with_help(format!("remove one of the `{kw}`s"))
+            .into());
         }
         self.seen.push(kw);
         Ok(())
@@ -200,8 +227,12 @@ impl Evaluator<'_> {
 
     /// "unknown parameter" for a keyword not valid in the block, with a suggestion.
     pub(crate) fn unknown_keyword(&self, c: &Cursor, kw: &str, span: Span, valid: &[&str]) -> Fail {
-        let mut d = Diagnostic::error(codes::UNKNOWN_PARAMETER, span, format!("`{kw}` is not valid in `{}`", c.block))
-            .with_label(format!("not a `{}` parameter", c.block));
+        let mut d = Diagnostic::error(
+            codes::UNKNOWN_PARAMETER,
+            span,
+            format!("`{kw}` is not valid in `{}`", c.block),
+        )
+        .with_label(format!("not a `{}` parameter", c.block));
         d = match did_you_mean(kw, valid.iter().copied()) {
             Some(s) => d.with_help(format!("did you mean `{s}`?")),
             None => d.with_help(format!("`{}` accepts: {}", c.block, valid.join(", "))),
@@ -225,9 +256,13 @@ impl Evaluator<'_> {
                 return self.unknown_keyword(c, k, *s, valid);
             }
         }
-        Diagnostic::error(codes::UNEXPECTED_ITEM, tok.span(), format!("unexpected {} in `{}`", tok.describe(), c.block))
-            .with_label("does not belong here")
-            .with_help(format!("`{}` accepts: {}", c.block, valid.join(", ")))
-            .into()
+        Diagnostic::error(
+            codes::UNEXPECTED_ITEM,
+            tok.span(),
+            format!("unexpected {} in `{}`", tok.describe(), c.block),
+        )
+        .with_label("does not belong here")
+        .with_help(format!("`{}` accepts: {}", c.block, valid.join(", ")))
+        .into()
     }
 }

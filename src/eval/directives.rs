@@ -13,7 +13,11 @@ impl Evaluator<'_> {
     /// Runs one directive; block directives expand their chosen bodies into `out`.
     pub(crate) fn directive(&mut self, d: &Directive, out: &mut Sink) -> R<()> {
         match &d.kind {
-            DirectiveKind::Declare { local, target, value } => {
+            DirectiveKind::Declare {
+                local,
+                target,
+                value,
+            } => {
                 let v = match value {
                     Rhs::Block(b) => self.block_value(b),
                     Rhs::Expr(e) => self.expr(e),
@@ -33,13 +37,20 @@ impl Evaluator<'_> {
             DirectiveKind::Undef { name, span } => {
                 if !self.scope.undef(*name) {
                     self.warn(
-                        Diagnostic::warning(codes::UNKNOWN_IDENTIFIER, *span, format!("`#undef {name}`: `{name}` is not defined"))
-                            .with_help("remove the #undef, or check the name's spelling"),
+                        Diagnostic::warning(
+                            codes::UNKNOWN_IDENTIFIER,
+                            *span,
+                            format!("`#undef {name}`: `{name}` is not defined"),
+                        )
+                        .with_help("remove the #undef, or check the name's spelling"),
                     );
                 }
                 Ok(())
             }
-            DirectiveKind::If { branches, otherwise } => {
+            DirectiveKind::If {
+                branches,
+                otherwise,
+            } => {
                 for (cond, body) in branches {
                     let v = self.expr(cond)?;
                     if self.to_float(&v, cond.span)? != 0.0 {
@@ -66,7 +77,11 @@ impl Evaluator<'_> {
                 }
                 Ok(())
             }
-            DirectiveKind::Switch { value, cases, otherwise } => {
+            DirectiveKind::Switch {
+                value,
+                cases,
+                otherwise,
+            } => {
                 let v = self.expr(value)?;
                 let x = self.to_float(&v, value.span)?;
                 let mut start = None;
@@ -79,7 +94,8 @@ impl Evaluator<'_> {
                         CaseTest::Range(a, b) => {
                             let av = self.expr(a)?;
                             let bv = self.expr(b)?;
-                            let (lo, hi) = (self.to_float(&av, a.span)?, self.to_float(&bv, b.span)?);
+                            let (lo, hi) =
+                                (self.to_float(&av, a.span)?, self.to_float(&bv, b.span)?);
                             lo <= x && x <= hi
                         }
                     };
@@ -106,19 +122,17 @@ impl Evaluator<'_> {
                 }
                 Ok(())
             }
-            DirectiveKind::While { cond, body } => {
-                loop {
-                    let v = self.expr(cond)?;
-                    if self.to_float(&v, cond.span)? == 0.0 {
-                        return Ok(());
-                    }
-                    self.count_iteration(d.span)?;
-                    self.expand(body, out);
-                    if self.stopped {
-                        return Ok(());
-                    }
+            DirectiveKind::While { cond, body } => loop {
+                let v = self.expr(cond)?;
+                if self.to_float(&v, cond.span)? == 0.0 {
+                    return Ok(());
                 }
-            }
+                self.count_iteration(d.span)?;
+                self.expand(body, out);
+                if self.stopped {
+                    return Ok(());
+                }
+            },
             DirectiveKind::For {
                 var,
                 var_span,
@@ -136,9 +150,15 @@ impl Evaluator<'_> {
                         let v = self.expr(s)?;
                         let st = self.to_float(&v, s.span)?;
                         if st == 0.0 {
-                            return Err(Diagnostic::error(codes::OUT_OF_RANGE, s.span, "`#for` step of 0 would never end")
-                                .with_help("use a positive step to count up or a negative one to count down")
-                                .into());
+                            return Err(Diagnostic::error(
+                                codes::OUT_OF_RANGE,
+                                s.span,
+                                "`#for` step of 0 would never end",
+                            )
+                            .with_help(
+                                "use a positive step to count up or a negative one to count down",
+                            )
+                            .into());
                         }
                         st
                     }
@@ -182,7 +202,8 @@ impl Evaluator<'_> {
                         return Err(self.reserved(p.span, &p.name.name()));
                     }
                 }
-                self.scope.declare(m.name, Value::Macro(m.clone()), m.name_span);
+                self.scope
+                    .declare(m.name, Value::Macro(m.clone()), m.name_span);
                 Ok(())
             }
             DirectiveKind::Include(e) => {
@@ -195,8 +216,12 @@ impl Evaluator<'_> {
                 let text = self.to_str(&v, e.span)?;
                 let text = text.trim_end_matches('\n').to_string();
                 match kind {
-                    MessageKind::Debug => self.warn(Diagnostic::note(codes::USER_DEBUG, d.span, text)),
-                    MessageKind::Warning => self.warn(Diagnostic::warning(codes::USER_WARNING, d.span, text)),
+                    MessageKind::Debug => {
+                        self.warn(Diagnostic::note(codes::USER_DEBUG, d.span, text))
+                    }
+                    MessageKind::Warning => {
+                        self.warn(Diagnostic::warning(codes::USER_WARNING, d.span, text))
+                    }
                     MessageKind::Error => {
                         self.stopped = true;
                         return Err(Diagnostic::error(codes::USER_ERROR, d.span, text)
@@ -231,8 +256,12 @@ impl Evaluator<'_> {
                 let ver = self.to_float(&v, e.span)?;
                 if ver > 3.8 {
                     self.warn(
-                        Diagnostic::warning(codes::IGNORED, e.span, format!("#version {ver}: rts follows POV-Ray 3.7"))
-                            .with_help("write `#version 3.7;`"),
+                        Diagnostic::warning(
+                            codes::IGNORED,
+                            e.span,
+                            format!("#version {ver}: rts follows POV-Ray 3.7"),
+                        )
+                        .with_help("write `#version 3.7;`"),
                     );
                 }
                 Ok(())
@@ -297,7 +326,12 @@ impl Evaluator<'_> {
             return Err(Diagnostic::error(
                 codes::INDEX_OUT_OF_RANGE,
                 target.name_span,
-                format!("`{}` has {} dimension(s) but {} indices were given", target.name, arr.dims.len(), idx.len()),
+                format!(
+                    "`{}` has {} dimension(s) but {} indices were given",
+                    target.name,
+                    arr.dims.len(),
+                    idx.len()
+                ),
             )
             .into());
         }
@@ -307,7 +341,10 @@ impl Evaluator<'_> {
                 return Err(Diagnostic::error(
                     codes::INDEX_OUT_OF_RANGE,
                     *s,
-                    format!("index {i} is outside the array (valid: 0 to {})", dim as i64 - 1),
+                    format!(
+                        "index {i} is outside the array (valid: 0 to {})",
+                        dim as i64 - 1
+                    ),
                 )
                 .with_help("array indices start at 0")
                 .into());
@@ -343,4 +380,3 @@ impl Evaluator<'_> {
         Ok(arr.elems.get(flat).is_some_and(Option::is_some))
     }
 }
-

@@ -6,7 +6,9 @@ use super::{Evaluator, Fail, R};
 use crate::diag::{codes, did_you_mean, Diagnostic};
 use crate::scene::Colour;
 use crate::span::Span;
-use crate::syntax::ast::{ArrayElem, ArrayInit, BinOp, ColourForm, ColourPart, Expr, ExprKind, UnOp};
+use crate::syntax::ast::{
+    ArrayElem, ArrayInit, BinOp, ColourForm, ColourPart, Expr, ExprKind, UnOp,
+};
 use crate::syntax::Sym;
 use glam::DVec3;
 use std::rc::Rc;
@@ -27,9 +29,15 @@ impl Evaluator<'_> {
                 }
                 match super::objects::matrix_from_12(&m) {
                     Some(t) => Ok(Value::Transform(std::sync::Arc::new(t))),
-                    None => Err(Diagnostic::error(codes::DEGENERATE_TRANSFORM, e.span, "this matrix cannot be inverted")
-                        .with_help("the first nine numbers must not flatten space (their determinant is 0)")
-                        .into()),
+                    None => Err(Diagnostic::error(
+                        codes::DEGENERATE_TRANSFORM,
+                        e.span,
+                        "this matrix cannot be inverted",
+                    )
+                    .with_help(
+                        "the first nine numbers must not flatten space (their determinant is 0)",
+                    )
+                    .into()),
                 }
             }
             ExprKind::Vector(parts) => {
@@ -37,7 +45,10 @@ impl Evaluator<'_> {
                     return Err(Diagnostic::error(
                         codes::TYPE_MISMATCH,
                         e.span,
-                        format!("a vector has 2 to 5 components (12 after `matrix`), this one has {}", parts.len()),
+                        format!(
+                            "a vector has 2 to 5 components (12 after `matrix`), this one has {}",
+                            parts.len()
+                        ),
                     )
                     .into());
                 }
@@ -71,7 +82,11 @@ impl Evaluator<'_> {
                     self.expr(b)
                 }
             }
-            ExprKind::Call { name, name_span, args } => self.call_value(*name, *name_span, args, e.span),
+            ExprKind::Call {
+                name,
+                name_span,
+                args,
+            } => self.call_value(*name, *name_span, args, e.span),
             ExprKind::Dot(a, comp, comp_span) => {
                 let v = self.expr(a)?;
                 self.component(&v, *comp, *comp_span, a.span)
@@ -243,7 +258,11 @@ impl Evaluator<'_> {
                 )
                 .with_help(format!(
                     "call it as {name}({})",
-                    m.params.iter().map(|p| p.name.to_string()).collect::<Vec<_>>().join(", ")
+                    m.params
+                        .iter()
+                        .map(|p| p.name.to_string())
+                        .collect::<Vec<_>>()
+                        .join(", ")
                 ))
                 .into()),
                 v => Ok(v.clone()),
@@ -254,7 +273,8 @@ impl Evaluator<'_> {
 
     /// "unknown identifier" with a suggestion among the names in scope and built-ins.
     pub(crate) fn unknown_identifier(&self, name: Sym, span: Span) -> Diagnostic {
-        let names: Vec<std::sync::Arc<str>> = self.scope.names().into_iter().map(Sym::name).collect();
+        let names: Vec<std::sync::Arc<str>> =
+            self.scope.names().into_iter().map(Sym::name).collect();
         let text = name.name();
         // Keywords are lowercase: suggest them only for lowercase words.
         let keywords: &[&str] = if text.chars().any(char::is_uppercase) {
@@ -267,8 +287,12 @@ impl Evaluator<'_> {
             .map(|s| &**s)
             .chain(builtins::BUILTIN_NAMES.iter().copied())
             .chain(keywords.iter().copied());
-        let mut d = Diagnostic::error(codes::UNKNOWN_IDENTIFIER, span, format!("unknown identifier `{text}`"))
-            .with_label("not declared");
+        let mut d = Diagnostic::error(
+            codes::UNKNOWN_IDENTIFIER,
+            span,
+            format!("unknown identifier `{text}`"),
+        )
+        .with_label("not declared");
         if let Some(s) = did_you_mean(&text, cands) {
             d = d.with_help(format!("did you mean `{s}`?"));
         } else if text.chars().next().is_some_and(char::is_uppercase) {
@@ -286,9 +310,15 @@ impl Evaluator<'_> {
             return Err(Diagnostic::error(
                 codes::INDEX_OUT_OF_RANGE,
                 span,
-                format!("index {idx} is outside the array (valid: 0 to {})", dim as i64 - 1),
+                format!(
+                    "index {idx} is outside the array (valid: 0 to {})",
+                    dim as i64 - 1
+                ),
             )
-            .with_label(format!("the dimension has {dim} element{}", if dim == 1 { "" } else { "s" }))
+            .with_label(format!(
+                "the dimension has {dim} element{}",
+                if dim == 1 { "" } else { "s" }
+            ))
             .with_help("array indices start at 0")
             .into());
         }
@@ -303,8 +333,12 @@ impl Evaluator<'_> {
             let v = self.expr(d)?;
             let n = self.to_float(&v, d.span)?;
             if n < 1.0 || n.fract() != 0.0 {
-                return Err(Diagnostic::error(codes::INVALID_SIZE, d.span, format!("array size must be a whole number of at least 1, found {n}"))
-                    .into());
+                return Err(Diagnostic::error(
+                    codes::INVALID_SIZE,
+                    d.span,
+                    format!("array size must be a whole number of at least 1, found {n}"),
+                )
+                .into());
             }
             if n > self.options.max_array_size as f64 {
                 return Err(self.array_too_big(d.span));
@@ -332,12 +366,23 @@ impl Evaluator<'_> {
         .into()
     }
 
-    fn fill_array(&mut self, init: &ArrayInit, dims: &[usize], level: usize, out: &mut [Option<Value>], base: usize) -> R<()> {
+    fn fill_array(
+        &mut self,
+        init: &ArrayInit,
+        dims: &[usize],
+        level: usize,
+        out: &mut [Option<Value>],
+        base: usize,
+    ) -> R<()> {
         if init.elems.len() != dims[level] {
             return Err(Diagnostic::error(
                 codes::INVALID_SIZE,
                 init.span,
-                format!("expected {} elements here, found {}", dims[level], init.elems.len()),
+                format!(
+                    "expected {} elements here, found {}",
+                    dims[level],
+                    init.elems.len()
+                ),
             )
             .with_help("give exactly as many elements as the array's size in this dimension")
             .into());
@@ -349,19 +394,31 @@ impl Evaluator<'_> {
             match (el, last) {
                 (ArrayElem::Nested(n), false) => self.fill_array(n, dims, level + 1, out, at)?,
                 (ArrayElem::Nested(n), true) => {
-                    return Err(Diagnostic::error(codes::TYPE_MISMATCH, n.span, "too many levels of `{ }` for this array")
-                        .with_help("an array with one dimension takes `{ a, b, c }`")
-                        .into())
+                    return Err(Diagnostic::error(
+                        codes::TYPE_MISMATCH,
+                        n.span,
+                        "too many levels of `{ }` for this array",
+                    )
+                    .with_help("an array with one dimension takes `{ a, b, c }`")
+                    .into())
                 }
                 (ArrayElem::Expr(e), true) => out[at] = Some(self.expr(e)?),
                 (ArrayElem::Block(b), true) => out[at] = Some(self.block_value(b)?),
                 (ArrayElem::Expr(e), false) => {
-                    return Err(Diagnostic::error(codes::TYPE_MISMATCH, e.span, "expected `{` for the next dimension of the array")
-                        .into())
+                    return Err(Diagnostic::error(
+                        codes::TYPE_MISMATCH,
+                        e.span,
+                        "expected `{` for the next dimension of the array",
+                    )
+                    .into())
                 }
                 (ArrayElem::Block(b), false) => {
-                    return Err(Diagnostic::error(codes::TYPE_MISMATCH, b.span, "expected `{` for the next dimension of the array")
-                        .into())
+                    return Err(Diagnostic::error(
+                        codes::TYPE_MISMATCH,
+                        b.span,
+                        "expected `{` for the next dimension of the array",
+                    )
+                    .into())
                 }
             }
         }
@@ -379,10 +436,17 @@ impl Evaluator<'_> {
             "transmit" => 4,
             "gray" | "grey" => 5,
             _ => {
-                let cands = ["x", "y", "z", "t", "u", "v", "red", "green", "blue", "filter", "transmit", "gray"];
-                return Err(Diagnostic::error(codes::BAD_COMPONENT, comp_span, format!("unknown component `.{name}`"))
-                    .with_help_opt(did_you_mean(&name, cands).map(|s| format!("did you mean `.{s}`?")))
-                    .into());
+                let cands = [
+                    "x", "y", "z", "t", "u", "v", "red", "green", "blue", "filter", "transmit",
+                    "gray",
+                ];
+                return Err(Diagnostic::error(
+                    codes::BAD_COMPONENT,
+                    comp_span,
+                    format!("unknown component `.{name}`"),
+                )
+                .with_help_opt(did_you_mean(&name, cands).map(|s| format!("did you mean `.{s}`?")))
+                .into());
             }
         };
         match v {
@@ -455,9 +519,13 @@ impl Evaluator<'_> {
                 BinOp::Gt => x > y,
                 BinOp::Ge => x >= y,
                 _ => {
-                    return Err(Diagnostic::error(codes::TYPE_MISMATCH, span, "strings cannot be combined with arithmetic")
-                        .with_help("join strings with concat(A, B)")
-                        .into())
+                    return Err(Diagnostic::error(
+                        codes::TYPE_MISMATCH,
+                        span,
+                        "strings cannot be combined with arithmetic",
+                    )
+                    .with_help("join strings with concat(A, B)")
+                    .into())
                 }
             };
             return Ok(Value::Float(f64::from(u8::from(r))));
@@ -467,7 +535,10 @@ impl Evaluator<'_> {
         let (xa, na) = self.components(&av, a.span)?;
         let (xb, nb) = self.components(&bv, b.span)?;
         let n = if colour { 5 } else { na.max(nb) };
-        if matches!(op, BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge | BinOp::Eq | BinOp::Ne) {
+        if matches!(
+            op,
+            BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge | BinOp::Eq | BinOp::Ne
+        ) {
             if !colour && na > 1 && nb > 1 && na != nb {
                 return Err(self.mismatch(&format!("a vector of {na} components"), &bv, b.span));
             }
@@ -476,13 +547,18 @@ impl Evaluator<'_> {
         }
         let mut out = [0.0; 5];
         for i in 0..n {
-            let Value::Float(r) = self.float_op(op, xa[i], xb[i], b.span)? else { unreachable!() };
+            let Value::Float(r) = self.float_op(op, xa[i], xb[i], b.span)? else {
+                unreachable!()
+            };
             out[i] = r;
         }
         Ok(if colour {
             Value::Colour(colour_from_array(out))
         } else {
-            Value::Vector(Vector { c: out, len: n as u8 })
+            Value::Vector(Vector {
+                c: out,
+                len: n as u8,
+            })
         })
     }
 
@@ -512,9 +588,13 @@ impl Evaluator<'_> {
             BinOp::Mul => Value::Float(x * y),
             BinOp::Div => {
                 if y == 0.0 {
-                    return Err(Diagnostic::error(codes::DIVISION_BY_ZERO, rhs, "division by zero")
-                        .with_label("this is 0")
-                        .into());
+                    return Err(Diagnostic::error(
+                        codes::DIVISION_BY_ZERO,
+                        rhs,
+                        "division by zero",
+                    )
+                    .with_label("this is 0")
+                    .into());
                 }
                 Value::Float(x / y)
             }
@@ -556,9 +636,13 @@ impl Evaluator<'_> {
         if let Value::Poison = found {
             return Fail::silent();
         }
-        Diagnostic::error(codes::TYPE_MISMATCH, span, format!("expected {want}, found {}", found.kind()))
-            .with_label(format!("this is {}", describe(found)))
-            .into()
+        Diagnostic::error(
+            codes::TYPE_MISMATCH,
+            span,
+            format!("expected {want}, found {}", found.kind()),
+        )
+        .with_label(format!("this is {}", describe(found)))
+        .into()
     }
 
     /// A float.

@@ -51,7 +51,10 @@ impl Evaluator<'_> {
             return Err(Diagnostic::error(
                 codes::INCLUDE_DEPTH,
                 span,
-                format!("includes nested more than {} deep", self.options.max_include_depth),
+                format!(
+                    "includes nested more than {} deep",
+                    self.options.max_include_depth
+                ),
             )
             .into());
         }
@@ -107,7 +110,11 @@ impl Evaluator<'_> {
                 continue;
             }
             let canon = path.canonicalize().unwrap_or(path.clone());
-            if !self.options.access.permits(&canon, self.scene_dir.as_deref()) {
+            if !self
+                .options
+                .access
+                .permits(&canon, self.scene_dir.as_deref())
+            {
                 return Err(Diagnostic::error(
                     codes::FILE_NOT_ALLOWED,
                     span,
@@ -135,12 +142,19 @@ impl Evaluator<'_> {
             if let Some(id) = self.sources.find_path(&path) {
                 return Ok(id);
             }
-            return Ok(self.sources.add(format!("<stdlib>/{lib}"), Some(path), (*text).to_string()));
+            return Ok(self.sources.add(
+                format!("<stdlib>/{lib}"),
+                Some(path),
+                (*text).to_string(),
+            ));
         }
         let mut known: Vec<String> = STDLIB.iter().map(|(n, _)| n.to_string()).collect();
         for dir in &dirs {
             if let Ok(rd) = std::fs::read_dir(dir) {
-                known.extend(rd.flatten().map(|e| e.file_name().to_string_lossy().into_owned()));
+                known.extend(
+                    rd.flatten()
+                        .map(|e| e.file_name().to_string_lossy().into_owned()),
+                );
             }
         }
         let mut d = Diagnostic::error(codes::FILE_NOT_FOUND, span, format!("include file `{name}` not found"))

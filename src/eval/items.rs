@@ -148,7 +148,13 @@ impl Evaluator<'_> {
     }
 
     /// Expands a macro call into `out`.
-    pub(crate) fn call_macro(&mut self, m: &Rc<MacroDef>, args: &[Arg], call: Span, out: &mut Sink) -> R<()> {
+    pub(crate) fn call_macro(
+        &mut self,
+        m: &Rc<MacroDef>,
+        args: &[Arg],
+        call: Span,
+        out: &mut Sink,
+    ) -> R<()> {
         let required = m.params.iter().filter(|p| !p.optional).count();
         if args.len() < required || args.len() > m.params.len() {
             let want = if required == m.params.len() {
@@ -159,7 +165,12 @@ impl Evaluator<'_> {
             return Err(Diagnostic::error(
                 codes::ARITY,
                 call,
-                format!("macro `{}` takes {want} argument{}, found {}", m.name, if want == "1" { "" } else { "s" }, args.len()),
+                format!(
+                    "macro `{}` takes {want} argument{}, found {}",
+                    m.name,
+                    if want == "1" { "" } else { "s" },
+                    args.len()
+                ),
             )
             .with_secondary(m.name_span, "macro defined here")
             .with_help(format!(
@@ -167,7 +178,11 @@ impl Evaluator<'_> {
                 m.name,
                 m.params
                     .iter()
-                    .map(|p| if p.optional { format!("optional {}", p.name) } else { p.name.to_string() })
+                    .map(|p| if p.optional {
+                        format!("optional {}", p.name)
+                    } else {
+                        p.name.to_string()
+                    })
                     .collect::<Vec<_>>()
                     .join(", ")
             ))
@@ -207,7 +222,13 @@ impl Evaluator<'_> {
     }
 
     /// A call in an expression: a built-in function or a macro that yields one value.
-    pub(crate) fn call_value(&mut self, name: Sym, name_span: Span, args: &[Arg], span: Span) -> R<Value> {
+    pub(crate) fn call_value(
+        &mut self,
+        name: Sym,
+        name_span: Span,
+        args: &[Arg],
+        span: Span,
+    ) -> R<Value> {
         if name.is_builtin() && builtins::is_function(name.0 as usize) {
             if builtins::BUILTIN_NAMES[name.0 as usize] == "defined" {
                 return self.defined(args, span);
@@ -230,9 +251,13 @@ impl Evaluator<'_> {
                     Value::Poison => Err(Fail::silent()),
                     v => Ok(v),
                 },
-                (None, _) => Err(Diagnostic::error(codes::TYPE_MISMATCH, span, format!("macro `{name}` produced no value"))
-                    .with_help("a macro used in an expression must end with the value it gives")
-                    .into()),
+                (None, _) => Err(Diagnostic::error(
+                    codes::TYPE_MISMATCH,
+                    span,
+                    format!("macro `{name}` produced no value"),
+                )
+                .with_help("a macro used in an expression must end with the value it gives")
+                .into()),
                 (Some(t), _) => Err(Diagnostic::error(
                     codes::TYPE_MISMATCH,
                     span,
@@ -255,21 +280,28 @@ impl Evaluator<'_> {
                     .scope
                     .names()
                     .into_iter()
-                    .filter(|s| matches!(self.scope.get(*s).map(|b| &b.value), Some(Value::Macro(_))))
+                    .filter(|s| {
+                        matches!(self.scope.get(*s).map(|b| &b.value), Some(Value::Macro(_)))
+                    })
                     .map(Sym::name)
                     .collect();
-                let cands = names
-                    .iter()
-                    .map(|s| &**s)
-                    .chain(builtins::BUILTIN_NAMES[builtins::CONSTANT_COUNT..].iter().copied());
+                let cands = names.iter().map(|s| &**s).chain(
+                    builtins::BUILTIN_NAMES[builtins::CONSTANT_COUNT..]
+                        .iter()
+                        .copied(),
+                );
                 let text = name.name();
-                Err(Diagnostic::error(codes::UNKNOWN_IDENTIFIER, name_span, format!("unknown macro or function `{text}`"))
-                    .with_label("not defined")
-                    .with_help(match did_you_mean(&text, cands) {
-                        Some(s) => format!("did you mean `{s}`?"),
-                        None => format!("define it with `#macro {text}(…) … #end` before calling it"),
-                    })
-                    .into())
+                Err(Diagnostic::error(
+                    codes::UNKNOWN_IDENTIFIER,
+                    name_span,
+                    format!("unknown macro or function `{text}`"),
+                )
+                .with_label("not defined")
+                .with_help(match did_you_mean(&text, cands) {
+                    Some(s) => format!("did you mean `{s}`?"),
+                    None => format!("define it with `#macro {text}(…) … #end` before calling it"),
+                })
+                .into())
             }
         }
     }
@@ -277,8 +309,13 @@ impl Evaluator<'_> {
     fn defined(&mut self, args: &[Arg], span: Span) -> R<Value> {
         match args {
             [Arg::Expr(e)] => match &e.kind {
-                ExprKind::Ident(n) => Ok(Value::Float(f64::from(u8::from(n.is_builtin() || self.scope.get(*n).is_some())))),
-                _ => Err(Diagnostic::error(codes::TYPE_MISMATCH, e.span, "`defined` needs a name").into()),
+                ExprKind::Ident(n) => Ok(Value::Float(f64::from(u8::from(
+                    n.is_builtin() || self.scope.get(*n).is_some(),
+                )))),
+                _ => Err(
+                    Diagnostic::error(codes::TYPE_MISMATCH, e.span, "`defined` needs a name")
+                        .into(),
+                ),
             },
             _ => Err(Diagnostic::error(codes::ARITY, span, "`defined` takes one name").into()),
         }

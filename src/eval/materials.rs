@@ -9,22 +9,83 @@ use crate::scene::{Colour, Finish, Pattern, Pigment, Reflection, Texture, Transf
 use glam::DVec3;
 use std::sync::Arc;
 
-const TEXTURE_ITEMS: &[&str] = &["pigment", "finish", "translate", "rotate", "scale", "matrix", "transform"];
-const PIGMENT_ITEMS: &[&str] = &["color", "rgb", "checker", "translate", "rotate", "scale", "matrix", "transform"];
+const TEXTURE_ITEMS: &[&str] = &[
+    "pigment",
+    "finish",
+    "translate",
+    "rotate",
+    "scale",
+    "matrix",
+    "transform",
+];
+const PIGMENT_ITEMS: &[&str] = &[
+    "color",
+    "rgb",
+    "checker",
+    "translate",
+    "rotate",
+    "scale",
+    "matrix",
+    "transform",
+];
 const FINISH_ITEMS: &[&str] = &[
-    "ambient", "diffuse", "brilliance", "phong", "phong_size", "specular", "roughness", "metallic", "reflection",
+    "ambient",
+    "diffuse",
+    "brilliance",
+    "phong",
+    "phong_size",
+    "specular",
+    "roughness",
+    "metallic",
+    "reflection",
 ];
 const REFLECTION_ITEMS: &[&str] = &["fresnel", "falloff", "metallic"];
 /// Pattern keywords of POV-Ray that a later release implements.
 const LATER_PATTERNS: &[&str] = &[
-    "hexagon", "brick", "gradient", "radial", "onion", "leopard", "spotted", "bozo", "marble", "wood", "granite",
-    "agate", "wrinkles", "ripples", "waves", "bumps", "dents", "image_map", "color_map", "colour_map", "turbulence",
-    "octaves", "omega", "lambda", "frequency", "phase", "uv_mapping", "warp",
+    "hexagon",
+    "brick",
+    "gradient",
+    "radial",
+    "onion",
+    "leopard",
+    "spotted",
+    "bozo",
+    "marble",
+    "wood",
+    "granite",
+    "agate",
+    "wrinkles",
+    "ripples",
+    "waves",
+    "bumps",
+    "dents",
+    "image_map",
+    "color_map",
+    "colour_map",
+    "turbulence",
+    "octaves",
+    "omega",
+    "lambda",
+    "frequency",
+    "phase",
+    "uv_mapping",
+    "warp",
 ];
-const LATER_FINISH: &[&str] = &["conserve_energy", "emission", "irid", "crand", "reflection_exponent", "fresnel"];
+const LATER_FINISH: &[&str] = &[
+    "conserve_energy",
+    "emission",
+    "irid",
+    "crand",
+    "reflection_exponent",
+    "fresnel",
+];
 
 fn compose_pattern(p: &mut Pigment, t: &Transform) {
-    let cur = p.transform.as_deref().copied().unwrap_or(Transform::IDENTITY);
+    let cur = p
+        .transform
+        .as_deref()
+        .copied()
+        .unwrap_or(Transform::IDENTITY);
     p.transform = Some(Arc::new(cur.then(t)));
 }
 
@@ -49,9 +110,9 @@ impl Evaluator<'_> {
                     tex.finish = *f;
                     Ok(())
                 }
-                Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => {
-                    self.transform_kw(kw, span, c).map(|t| compose_pattern(&mut tex.pigment, &t))
-                }
+                Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => self
+                    .transform_kw(kw, span, c)
+                    .map(|t| compose_pattern(&mut tex.pigment, &t)),
                 Tok::Block(_, Value::Transform(t), _) => {
                     compose_pattern(&mut tex.pigment, &t);
                     Ok(())
@@ -76,7 +137,9 @@ impl Evaluator<'_> {
                     pattern_given = true;
                     Ok(())
                 }
-                Tok::Val(v @ (Value::Colour(_) | Value::Vector(_) | Value::Float(_)), span) if !pattern_given => {
+                Tok::Val(v @ (Value::Colour(_) | Value::Vector(_) | Value::Float(_)), span)
+                    if !pattern_given =>
+                {
                     pattern_given = true;
                     self.to_colour(&v, span).map(|col| {
                         pig = Pigment {
@@ -98,21 +161,25 @@ impl Evaluator<'_> {
                         })
                     }
                 }
-                Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => {
-                    self.transform_kw(kw, span, c).map(|t| compose_pattern(&mut pig, &t))
-                }
+                Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => self
+                    .transform_kw(kw, span, c)
+                    .map(|t| compose_pattern(&mut pig, &t)),
                 Tok::Block(_, Value::Transform(t), _) => {
                     compose_pattern(&mut pig, &t);
                     Ok(())
                 }
-                Tok::Kw("quick_color" | "quick_colour", _) => self.take_colour(c, "a colour").map(|_| ()),
-                Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_PATTERNS.contains(&kw) => Err(Diagnostic::error(
-                    codes::UNSUPPORTED,
-                    span,
-                    format!("`{kw}` in pigments is not implemented in rts yet"),
-                )
-                .with_help("this release supports solid colours and `checker`")
-                .into()),
+                Tok::Kw("quick_color" | "quick_colour", _) => {
+                    self.take_colour(c, "a colour").map(|_| ())
+                }
+                Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_PATTERNS.contains(&kw) => {
+                    Err(Diagnostic::error(
+                        codes::UNSUPPORTED,
+                        span,
+                        format!("`{kw}` in pigments is not implemented in rts yet"),
+                    )
+                    .with_help("this release supports solid colours and `checker`")
+                    .into())
+                }
                 Tok::Val(Value::Poison, _) => Err(Fail::silent()),
                 Tok::Val(v, span) if pattern_given => Err(Diagnostic::error(
                     codes::UNEXPECTED_ITEM,
@@ -131,9 +198,13 @@ impl Evaluator<'_> {
     }
 
     fn second_pattern(&self, span: crate::span::Span) -> Fail {
-        Diagnostic::error(codes::DUPLICATE_PARAMETER, span, "a pigment has only one pattern")
-            .with_help("remove the earlier colour or pattern")
-            .into()
+        Diagnostic::error(
+            codes::DUPLICATE_PARAMETER,
+            span,
+            "a pigment has only one pattern",
+        )
+        .with_help("remove the earlier colour or pattern")
+        .into()
     }
 
     /// The two entries after `checker` (colours or pigments); POV-Ray's defaults are
@@ -202,15 +273,23 @@ impl Evaluator<'_> {
     fn finish_item(&mut self, f: &mut Finish, c: &mut Cursor, tok: Tok) -> R<()> {
         let nonneg = |ev: &Self, v: f64, span, what: &str| -> R<f64> {
             if v < 0.0 {
-                return Err(Diagnostic::error(codes::OUT_OF_RANGE, span, format!("{what} must not be negative, found {v}"))
-                    .with_help(format!("give {what} 0 or more"))
-                    .into());
+                return Err(Diagnostic::error(
+                    codes::OUT_OF_RANGE,
+                    span,
+                    format!("{what} must not be negative, found {v}"),
+                )
+                .with_help(format!("give {what} 0 or more"))
+                .into());
             }
             let _ = ev;
             Ok(v)
         };
         match tok {
-            Tok::Kw(kw @ ("ambient" | "diffuse" | "brilliance" | "phong" | "phong_size" | "specular" | "roughness"), span) => {
+            Tok::Kw(
+                kw @ ("ambient" | "diffuse" | "brilliance" | "phong" | "phong_size" | "specular"
+                | "roughness"),
+                span,
+            ) => {
                 c.once(kw, span)?;
                 if kw == "ambient" {
                     let (v, s) = c.value("the ambient amount or colour")?;
@@ -230,9 +309,13 @@ impl Evaluator<'_> {
                     "specular" => f.specular = x,
                     _ => {
                         if x == 0.0 {
-                            return Err(Diagnostic::error(codes::OUT_OF_RANGE, s, "roughness must be greater than 0")
-                                .with_help("typical values are 0.0005 (sharp) to 0.1 (broad)")
-                                .into());
+                            return Err(Diagnostic::error(
+                                codes::OUT_OF_RANGE,
+                                s,
+                                "roughness must be greater than 0",
+                            )
+                            .with_help("typical values are 0.0005 (sharp) to 0.1 (broad)")
+                            .into());
                         }
                         f.roughness = x;
                     }
@@ -256,9 +339,13 @@ impl Evaluator<'_> {
                 f.reflection = r;
             }
             Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_FINISH.contains(&kw) => {
-                return Err(Diagnostic::error(codes::UNSUPPORTED, span, format!("`{kw}` is not implemented in rts yet"))
-                    .with_help("see docs/language.md for the finish terms this release supports")
-                    .into())
+                return Err(Diagnostic::error(
+                    codes::UNSUPPORTED,
+                    span,
+                    format!("`{kw}` is not implemented in rts yet"),
+                )
+                .with_help("see docs/language.md for the finish terms this release supports")
+                .into())
             }
             other => return Err(self.unexpected(c, &other, FINISH_ITEMS)),
         }
@@ -287,9 +374,16 @@ impl Evaluator<'_> {
                 )
                 .with_help("it needs `interior { ior … }`, which comes with refraction")
                 .into()),
-                Tok::Kw("falloff", _) => self.take_float(c, "the falloff exponent").map(|x| r.falloff = x),
+                Tok::Kw("falloff", _) => self
+                    .take_float(c, "the falloff exponent")
+                    .map(|x| r.falloff = x),
                 Tok::Kw("metallic", _) => self.take_optional_float(c, 1.0).map(|x| r.metallic = x),
-                Tok::Kw("exponent", span) => Err(Diagnostic::error(codes::UNSUPPORTED, span, "`exponent` is not implemented in rts yet").into()),
+                Tok::Kw("exponent", span) => Err(Diagnostic::error(
+                    codes::UNSUPPORTED,
+                    span,
+                    "`exponent` is not implemented in rts yet",
+                )
+                .into()),
                 other => Err(self.unexpected(c, &other, REFLECTION_ITEMS)),
             };
             if let Err(f) = res {

@@ -95,7 +95,12 @@ pub struct Evaluated {
 }
 
 /// Evaluates a parsed file (already added to `sources` as `file_id`).
-pub fn eval(file: &ast::File, file_id: FileId, sources: &mut SourceMap, options: &EvalOptions) -> Evaluated {
+pub fn eval(
+    file: &ast::File,
+    file_id: FileId,
+    sources: &mut SourceMap,
+    options: &EvalOptions,
+) -> Evaluated {
     let scene_dir = sources.get(file_id).dir().map(PathBuf::from);
     let mut ev = Evaluator {
         sources,
@@ -177,7 +182,9 @@ impl Evaluator<'_> {
         let defines = self.options.defines.clone();
         for (name, value) in defines {
             let text = format!("#declare {name} = {value};\n");
-            let id = self.sources.add(format!("<-D {name}={value}>"), None, text.clone());
+            let id = self
+                .sources
+                .add(format!("<-D {name}={value}>"), None, text.clone());
             let (file, diags) = crate::syntax::parse(&text, id);
             if !diags.is_empty() {
                 let span = Span::new(id, 0, text.len().saturating_sub(1));

@@ -12,8 +12,21 @@ use std::sync::Arc;
 
 /// Keywords every object accepts after its shape parameters.
 pub(crate) const OBJECT_MODIFIERS: &[&str] = &[
-    "translate", "rotate", "scale", "matrix", "transform", "texture", "pigment", "finish", "no_shadow", "no_image",
-    "no_reflection", "inverse", "hollow", "double_illuminate", "sturm",
+    "translate",
+    "rotate",
+    "scale",
+    "matrix",
+    "transform",
+    "texture",
+    "pigment",
+    "finish",
+    "no_shadow",
+    "no_image",
+    "no_reflection",
+    "inverse",
+    "hollow",
+    "double_illuminate",
+    "sturm",
 ];
 
 /// The transform keywords.
@@ -38,9 +51,13 @@ impl Evaluator<'_> {
                 let (v, s) = c.value("the plane's normal")?;
                 let normal = self.to_vec3(&v, s)?;
                 if normal.length_squared() == 0.0 {
-                    return Err(Diagnostic::error(codes::INVALID_SIZE, s, "the plane's normal is <0, 0, 0>")
-                        .with_help("give the direction the plane faces, e.g. `plane { y, 0 }`")
-                        .into());
+                    return Err(Diagnostic::error(
+                        codes::INVALID_SIZE,
+                        s,
+                        "the plane's normal is <0, 0, 0>",
+                    )
+                    .with_help("give the direction the plane faces, e.g. `plane { y, 0 }`")
+                    .into());
                 }
                 c.comma();
                 let distance = self.take_float(c, "the plane's distance from the origin")?;
@@ -60,8 +77,12 @@ impl Evaluator<'_> {
                 let (min, max) = (a.min(b), a.max(b));
                 if (max - min).min_element() == 0.0 {
                     self.warn(
-                        Diagnostic::warning(codes::INVALID_SIZE, s, "this box is flat: two corners share a coordinate")
-                            .with_help("a box needs corners that differ in x, y and z"),
+                        Diagnostic::warning(
+                            codes::INVALID_SIZE,
+                            s,
+                            "this box is flat: two corners share a coordinate",
+                        )
+                        .with_help("a box needs corners that differ in x, y and z"),
                     );
                 }
                 new_object(Shape::Box { min, max }, span)
@@ -75,11 +96,20 @@ impl Evaluator<'_> {
                 let cc = self.to_vec3(&v, s)?;
                 if (b - a).cross(cc - a).length_squared() == 0.0 {
                     self.warn(
-                        Diagnostic::warning(codes::INVALID_SIZE, s, "this triangle has no area: its corners are in a line")
-                            .with_help("move one corner off the line through the other two"),
+                        Diagnostic::warning(
+                            codes::INVALID_SIZE,
+                            s,
+                            "this triangle has no area: its corners are in a line",
+                        )
+                        .with_help("move one corner off the line through the other two"),
                     );
                 }
-                new_object(Shape::Triangle { vertices: [a, b, cc] }, span)
+                new_object(
+                    Shape::Triangle {
+                        vertices: [a, b, cc],
+                    },
+                    span,
+                )
             }
             "union" => {
                 let mut children = Vec::new();
@@ -131,10 +161,14 @@ impl Evaluator<'_> {
     }
 
     fn bad_size(&self, span: Span, what: &str, v: f64) -> Fail {
-        Diagnostic::error(codes::INVALID_SIZE, span, format!("{what} must be positive, found {v}"))
-            .with_label("not positive")
-            .with_help(format!("give a {what} greater than 0"))
-            .into()
+        Diagnostic::error(
+            codes::INVALID_SIZE,
+            span,
+            format!("{what} must be positive, found {v}"),
+        )
+        .with_label("not positive")
+        .with_help(format!("give a {what} greater than 0"))
+        .into()
     }
 
     /// The modifiers after an object's parameters; errors are reported and skipped.
@@ -197,14 +231,22 @@ impl Evaluator<'_> {
                 .into());
             }
             Tok::Block(_, Value::Object(_), span) => {
-                return Err(Diagnostic::error(codes::UNEXPECTED_ITEM, span, "objects must come before the union's modifiers")
-                    .with_help("move this object above the first transform or texture of the union")
-                    .into());
+                return Err(Diagnostic::error(
+                    codes::UNEXPECTED_ITEM,
+                    span,
+                    "objects must come before the union's modifiers",
+                )
+                .with_help("move this object above the first transform or texture of the union")
+                .into());
             }
             Tok::Kw("open", span) => {
-                return Err(Diagnostic::error(codes::UNKNOWN_PARAMETER, span, format!("`open` is not valid in `{}`", c.block))
-                    .with_help("`open` applies to cylinders and cones only")
-                    .into());
+                return Err(Diagnostic::error(
+                    codes::UNKNOWN_PARAMETER,
+                    span,
+                    format!("`open` is not valid in `{}`", c.block),
+                )
+                .with_help("`open` applies to cylinders and cones only")
+                .into());
             }
             other => return Err(self.unexpected(c, &other, OBJECT_MODIFIERS)),
         }
@@ -214,16 +256,24 @@ impl Evaluator<'_> {
     /// Evaluates one transform keyword (`translate V`, …) already taken from `c`.
     pub(crate) fn transform_kw(&mut self, kw: &str, kw_span: Span, c: &mut Cursor) -> R<Transform> {
         match kw {
-            "translate" => Ok(Transform::translate(self.take_vec3(c, "a vector to translate by")?)),
-            "rotate" => Ok(Transform::rotate(self.take_vec3(c, "the rotation angles <x, y, z> in degrees")?)),
+            "translate" => Ok(Transform::translate(
+                self.take_vec3(c, "a vector to translate by")?,
+            )),
+            "rotate" => Ok(Transform::rotate(
+                self.take_vec3(c, "the rotation angles <x, y, z> in degrees")?,
+            )),
             "scale" => {
                 let (v, s) = c.value("a scale factor")?;
                 let f = self.to_vec3(&v, s)?;
                 if f.x == 0.0 || f.y == 0.0 || f.z == 0.0 {
-                    return Err(Diagnostic::error(codes::DEGENERATE_TRANSFORM, s, "scale by 0 flattens the object")
-                        .with_label("a component is 0")
-                        .with_help("use a small non-zero scale instead, or remove the object")
-                        .into());
+                    return Err(Diagnostic::error(
+                        codes::DEGENERATE_TRANSFORM,
+                        s,
+                        "scale by 0 flattens the object",
+                    )
+                    .with_label("a component is 0")
+                    .with_help("use a small non-zero scale instead, or remove the object")
+                    .into());
                 }
                 Ok(Transform::scale(f))
             }
@@ -231,16 +281,26 @@ impl Evaluator<'_> {
                 let (v, s) = c.value("12 numbers `<…>` for the matrix")?;
                 match v {
                     Value::Transform(t) => Ok(*t),
-                    other => Err(self.mismatch("a matrix `<m00, m01, m02, … m32>` of 12 numbers", &other, s)),
+                    other => Err(self.mismatch(
+                        "a matrix `<m00, m01, m02, … m32>` of 12 numbers",
+                        &other,
+                        s,
+                    )),
                 }
             }
             _ => match c.next() {
-                Some(Tok::Val(Value::Transform(t), _) | Tok::Block(_, Value::Transform(t), _)) => Ok(*t),
+                Some(Tok::Val(Value::Transform(t), _) | Tok::Block(_, Value::Transform(t), _)) => {
+                    Ok(*t)
+                }
                 Some(Tok::Val(Value::Poison, _)) => Err(Fail::silent()),
                 Some(t) => Err(self.mismatch("a transform", &value_of(&t), t.span())),
-                None => Err(Diagnostic::error(codes::MISSING_VALUE, kw_span, "`transform` needs a transform")
-                    .with_help("write `transform { rotate … translate … }` or `transform My_Transform`")
-                    .into()),
+                None => Err(Diagnostic::error(
+                    codes::MISSING_VALUE,
+                    kw_span,
+                    "`transform` needs a transform",
+                )
+                .with_help("write `transform { rotate … translate … }` or `transform My_Transform`")
+                .into()),
             },
         }
     }
@@ -259,7 +319,18 @@ impl Evaluator<'_> {
                     };
                     continue;
                 }
-                other => Err(self.unexpected(c, &other, &["translate", "rotate", "scale", "matrix", "transform", "inverse"])),
+                other => Err(self.unexpected(
+                    c,
+                    &other,
+                    &[
+                        "translate",
+                        "rotate",
+                        "scale",
+                        "matrix",
+                        "transform",
+                        "inverse",
+                    ],
+                )),
             };
             match step {
                 Ok(s) => t = t.then(&s),
@@ -290,7 +361,11 @@ fn new_object(shape: Shape, span: Span) -> Object {
 /// Applies a transform to an object (its texture moves with it: textures are kept in
 /// the object's own frame).
 fn apply_transform(obj: &mut Object, t: &Transform) {
-    let current = obj.transform.as_deref().copied().unwrap_or(Transform::IDENTITY);
+    let current = obj
+        .transform
+        .as_deref()
+        .copied()
+        .unwrap_or(Transform::IDENTITY);
     obj.transform = Some(Arc::new(current.then(t)));
 }
 
@@ -298,7 +373,12 @@ fn apply_transform(obj: &mut Object, t: &Transform) {
 /// object's frame it is `object_from_world ∘ world_from_pattern`.
 fn attach(obj: &Object, mut tex: Texture) -> Arc<Texture> {
     if let Some(ot) = obj.transform.as_deref() {
-        let pattern = tex.pigment.transform.as_deref().copied().unwrap_or(Transform::IDENTITY);
+        let pattern = tex
+            .pigment
+            .transform
+            .as_deref()
+            .copied()
+            .unwrap_or(Transform::IDENTITY);
         let inv = Transform {
             matrix: ot.inverse,
             inverse: ot.matrix,
@@ -312,6 +392,10 @@ fn attach(obj: &Object, mut tex: Texture) -> Arc<Texture> {
 /// matrix applied to row vectors); `None` when it cannot be inverted.
 pub(crate) fn matrix_from_12(m: &[f64]) -> Option<Transform> {
     let col = |i: usize, w: f64| DVec4::new(m[3 * i], m[3 * i + 1], m[3 * i + 2], w);
-    Transform::from_matrix(DMat4::from_cols(col(0, 0.0), col(1, 0.0), col(2, 0.0), col(3, 1.0)))
+    Transform::from_matrix(DMat4::from_cols(
+        col(0, 0.0),
+        col(1, 0.0),
+        col(2, 0.0),
+        col(3, 1.0),
+    ))
 }
-

@@ -55,7 +55,10 @@ impl Scopes {
 
     /// `#undef`: removes the innermost binding; false if there was none.
     pub(crate) fn undef(&mut self, name: Sym) -> bool {
-        self.frames.iter_mut().rev().any(|f| f.remove(&name).is_some())
+        self.frames
+            .iter_mut()
+            .rev()
+            .any(|f| f.remove(&name).is_some())
     }
 
     /// Opens a local scope.

@@ -20,7 +20,10 @@ impl Vector {
     pub fn from_slice(s: &[f64]) -> Vector {
         let mut c = [0.0; 5];
         c[..s.len()].copy_from_slice(s);
-        Vector { c, len: s.len() as u8 }
+        Vector {
+            c,
+            len: s.len() as u8,
+        }
     }
 
     /// A 3-vector.

@@ -58,7 +58,8 @@ impl Transform {
         let r = degrees * (std::f64::consts::PI / 180.0);
         // POV-Ray's rotation matrices are the right-handed ones applied to row
         // vectors; for column vectors that is the usual rotation by the same angle.
-        let m = DMat4::from_rotation_z(r.z) * DMat4::from_rotation_y(r.y) * DMat4::from_rotation_x(r.x);
+        let m =
+            DMat4::from_rotation_z(r.z) * DMat4::from_rotation_y(r.y) * DMat4::from_rotation_x(r.x);
         Transform {
             matrix: m,
             inverse: m.transpose(),

@@ -43,7 +43,10 @@ impl Interner {
 
 /// The symbol for `name`.
 pub fn intern(name: &str) -> Sym {
-    interner().lock().unwrap_or_else(|e| e.into_inner()).intern(name)
+    interner()
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .intern(name)
 }
 
 impl Sym {

@@ -32,7 +32,10 @@ impl Lowerer {
 
     /// Lowers the children of `file`/`one_item`/`body`-like pairs into items.
     pub fn items(&mut self, pairs: Pairs<Rule>) -> Vec<Item> {
-        pairs.filter(|p| p.as_rule() != Rule::EOI).map(|p| self.item(p)).collect()
+        pairs
+            .filter(|p| p.as_rule() != Rule::EOI)
+            .map(|p| self.item(p))
+            .collect()
     }
 
     fn item(&mut self, p: P) -> Item {
@@ -63,14 +66,20 @@ impl Lowerer {
         let mut inner = p.into_inner();
         let keyword = self.keyword(inner.next().expect("block keyword"));
         let items = self.items(inner);
-        Block { keyword, items, span }
+        Block {
+            keyword,
+            items,
+            span,
+        }
     }
 
     fn lvalue(&mut self, p: P) -> LValue {
         let mut inner = p.into_inner();
         let name = inner.next().expect("lvalue name");
         let name_span = self.span(&name);
-        let indices = inner.map(|i| self.expr(i.into_inner().next().expect("index"))).collect();
+        let indices = inner
+            .map(|i| self.expr(i.into_inner().next().expect("index")))
+            .collect();
         LValue {
             name: intern(name.as_str()),
             name_span,
@@ -96,7 +105,11 @@ impl Lowerer {
                     Rule::block => Rhs::Block(Box::new(self.block(v))),
                     _ => Rhs::Expr(Box::new(self.expr(v))),
                 };
-                DirectiveKind::Declare { local, target, value }
+                DirectiveKind::Declare {
+                    local,
+                    target,
+                    value,
+                }
             }
             Rule::undef_d => {
                 let n = inner.nth(1).expect("name");
@@ -124,7 +137,10 @@ impl Lowerer {
                         _ => {}
                     }
                 }
-                DirectiveKind::If { branches, otherwise }
+                DirectiveKind::If {
+                    branches,
+                    otherwise,
+                }
             }
             Rule::ifdef_d => {
                 let negate = inner.next().expect("kind").as_str() == "ifndef";
@@ -253,7 +269,10 @@ impl Lowerer {
     }
 
     fn else_body(&mut self, p: P) -> Vec<Item> {
-        let body = p.into_inner().find(|x| x.as_rule() == Rule::body).expect("else body");
+        let body = p
+            .into_inner()
+            .find(|x| x.as_rule() == Rule::body)
+            .expect("else body");
         self.body(body)
     }
 
@@ -299,7 +318,9 @@ impl Lowerer {
                     first
                 }
             }
-            Rule::or_expr | Rule::and_expr | Rule::cmp_expr | Rule::sum | Rule::product => self.binary(p),
+            Rule::or_expr | Rule::and_expr | Rule::cmp_expr | Rule::sum | Rule::product => {
+                self.binary(p)
+            }
             Rule::unary => {
                 let mut ops = Vec::new();
                 let mut operand = None;
@@ -554,7 +575,11 @@ impl Lowerer {
                                 chars.next();
                             }
                         }
-                        _ => self.bad_escape(base + i, base + i + 2 + hex.len(), "`\\u` needs four hex digits"),
+                        _ => self.bad_escape(
+                            base + i,
+                            base + i + 2 + hex.len(),
+                            "`\\u` needs four hex digits",
+                        ),
                     }
                 }
                 _ => self.bad_escape(base + i, base + i + 1 + e.len_utf8(), "unknown escape"),
@@ -565,8 +590,12 @@ impl Lowerer {
 
     fn bad_escape(&mut self, start: usize, end: usize, what: &str) {
         self.diags.push(
-            Diagnostic::error(codes::BAD_ESCAPE, Span::new(self.file, start, end), format!("{what} in string"))
-                .with_help(r#"valid escapes are \n \t \r \b \f \a \v \\ \" \' and \uXXXX"#),
+            Diagnostic::error(
+                codes::BAD_ESCAPE,
+                Span::new(self.file, start, end),
+                format!("{what} in string"),
+            )
+            .with_help(r#"valid escapes are \n \t \r \b \f \a \v \\ \" \' and \uXXXX"#),
         );
     }
 }

@@ -17,7 +17,7 @@ pub use lower::MAX_CHAIN;
 
 use crate::diag::{codes, Diagnostic};
 use crate::span::{FileId, Span};
-use parser::{Rule, RtsParser};
+use parser::{RtsParser, Rule};
 use pest::Parser;
 
 /// Parses one file. Returns the items that parsed and the problems found; when the
@@ -111,7 +111,8 @@ fn token_at(text: &str, at: usize) -> (String, usize) {
         return ("end of file".into(), 0);
     };
     let len = if c.is_alphanumeric() || c == '_' {
-        rest.find(|ch: char| !(ch.is_alphanumeric() || ch == '_' || ch == '.')).unwrap_or(rest.len())
+        rest.find(|ch: char| !(ch.is_alphanumeric() || ch == '_' || ch == '.'))
+            .unwrap_or(rest.len())
     } else {
         c.len_utf8()
     };
@@ -148,7 +149,8 @@ fn syntax_error(text: &str, file: FileId, at: usize, e: &pest::error::Error<Rule
             }
         }
         for stack in attempts.call_stacks() {
-            if let Some(name) = names::human(stack.deepest.get_rule().copied().unwrap_or(Rule::EOI)) {
+            if let Some(name) = names::human(stack.deepest.get_rule().copied().unwrap_or(Rule::EOI))
+            {
                 if stack.deepest.get_rule().is_some() {
                     expected.push(name);
                 }
@@ -213,7 +215,10 @@ mod tests {
     fn reports_several_errors() {
         let (_, d) = parse("sphere { 0, 1 ]\n", FileId(0));
         assert_eq!(d.len(), 1);
-        let (_, d) = parse("sphere { <0,0,0> 1 2 + }\nplane { y, 0 }\nbox { 1, 2 * }\n", FileId(0));
+        let (_, d) = parse(
+            "sphere { <0,0,0> 1 2 + }\nplane { y, 0 }\nbox { 1, 2 * }\n",
+            FileId(0),
+        );
         assert_eq!(d.len(), 2, "{d:#?}");
         assert!(d.iter().all(|x| x.code == codes::SYNTAX_EXPECTED));
     }

@@ -69,7 +69,9 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         Rule::index => "`[`",
         Rule::vector => "a vector `<…>`",
         Rule::colour | Rule::colour_kw => "a colour",
-        Rule::colour_part | Rule::colour_part_kw => "`red`, `green`, `blue`, `filter` or `transmit`",
+        Rule::colour_part | Rule::colour_part_kw => {
+            "`red`, `green`, `blue`, `filter` or `transmit`"
+        }
         Rule::array | Rule::array_kw => "an array",
         Rule::array_init => "`{`",
         Rule::call => "a function call",

@@ -115,8 +115,23 @@ impl Scanner<'_> {
                     }
                 }
                 b'<' => {
-                    if matches!(self.prev, b'(' | b',' | b'<' | b'[' | b'{' | b'=' | b'+' | b'-' | b'*' | b'/' | b'?' | b':' | b'!' | b'&' | b'|')
-                    {
+                    if matches!(
+                        self.prev,
+                        b'(' | b','
+                            | b'<'
+                            | b'['
+                            | b'{'
+                            | b'='
+                            | b'+'
+                            | b'-'
+                            | b'*'
+                            | b'/'
+                            | b'?'
+                            | b':'
+                            | b'!'
+                            | b'&'
+                            | b'|'
+                    ) {
                         self.angle_depth += 1;
                         if self.angle_depth > MAX_NESTING {
                             self.too_deep(i, 1, "vectors");
@@ -156,7 +171,16 @@ impl Scanner<'_> {
                     let word = &b[start..i];
                     let colourish = matches!(
                         word,
-                        b"rgb" | b"rgbf" | b"rgbt" | b"rgbft" | b"srgb" | b"srgbf" | b"srgbt" | b"srgbft" | b"color" | b"colour"
+                        b"rgb"
+                            | b"rgbf"
+                            | b"rgbt"
+                            | b"rgbft"
+                            | b"srgb"
+                            | b"srgbf"
+                            | b"srgbt"
+                            | b"srgbft"
+                            | b"color"
+                            | b"colour"
                     );
                     if colourish {
                         self.prefix_run += 1;
@@ -211,11 +235,17 @@ impl Scanner<'_> {
             }
         }
         let at = *openers.last().unwrap_or(&start);
-        let mut d = Diagnostic::error(codes::UNCLOSED_COMMENT, self.span(at, at + 2), "unclosed block comment")
-            .with_label("this comment is never closed")
-            .with_help("add `*/` where the comment should end");
+        let mut d = Diagnostic::error(
+            codes::UNCLOSED_COMMENT,
+            self.span(at, at + 2),
+            "unclosed block comment",
+        )
+        .with_label("this comment is never closed")
+        .with_help("add `*/` where the comment should end");
         if openers.len() > 1 {
-            d = d.with_note("block comments nest in .rts as in POV-Ray: each `/*` needs its own `*/`");
+            d = d.with_note(
+                "block comments nest in .rts as in POV-Ray: each `/*` needs its own `*/`",
+            );
         }
         self.diags.push(d);
         None
@@ -235,9 +265,13 @@ impl Scanner<'_> {
         }
         let end = i.min(b.len());
         self.diags.push(
-            Diagnostic::error(codes::UNCLOSED_STRING, self.span(start, end), "unclosed string")
-                .with_label("this string has no closing quote on its line")
-                .with_help("add `\"` at the end of the string (strings cannot span lines)"),
+            Diagnostic::error(
+                codes::UNCLOSED_STRING,
+                self.span(start, end),
+                "unclosed string",
+            )
+            .with_label("this string has no closing quote on its line")
+            .with_help("add `\"` at the end of the string (strings cannot span lines)"),
         );
         end
     }
@@ -250,7 +284,10 @@ impl Scanner<'_> {
                     Diagnostic::error(
                         codes::UNMATCHED_DELIMITER,
                         self.span(i, i + 1),
-                        format!("`{}` does not close the `{}` before it", c as char, open as char),
+                        format!(
+                            "`{}` does not close the `{}` before it",
+                            c as char, open as char
+                        ),
                     )
                     .with_label(format!("expected `{}` here", closer_for(open) as char))
                     .with_secondary(self.span(at, at + 1), "this is the bracket still open")
@@ -302,7 +339,9 @@ impl Scanner<'_> {
                 self.diags.push(
                     Diagnostic::error(codes::STRAY_DIRECTIVE, span, "`#end` with nothing to close")
                         .with_label("no #if, #while, #for, #macro or #switch is open here")
-                        .with_help("remove this `#end`, or add the directive it was meant to close"),
+                        .with_help(
+                            "remove this `#end`, or add the directive it was meant to close",
+                        ),
                 );
                 return false;
             }
@@ -322,9 +361,13 @@ impl Scanner<'_> {
                     _ => "#switch",
                 };
                 self.diags.push(
-                    Diagnostic::error(codes::STRAY_DIRECTIVE, span, format!("`#{word}` outside {needs}"))
-                        .with_label(format!("no {needs} is open here"))
-                        .with_help(format!("`#{word}` may only stand inside {needs} … #end")),
+                    Diagnostic::error(
+                        codes::STRAY_DIRECTIVE,
+                        span,
+                        format!("`#{word}` outside {needs}"),
+                    )
+                    .with_label(format!("no {needs} is open here"))
+                    .with_help(format!("`#{word}` may only stand inside {needs} … #end")),
                 );
                 return false;
             }
@@ -380,7 +423,10 @@ impl Scanner<'_> {
                     format!("unclosed {what}: `{}` is never closed", open as char),
                 )
                 .with_label("opened here")
-                .with_help(format!("add `{}` where it should end", closer_for(open) as char)),
+                .with_help(format!(
+                    "add `{}` where it should end",
+                    closer_for(open) as char
+                )),
             );
         }
     }
@@ -396,7 +442,9 @@ mod tests {
 
     #[test]
     fn clean_input_passes() {
-        assert!(codes("sphere { <0,0,0>, 1 /* a /* nested */ comment */ } // x\n\"s\\\"\"").is_empty());
+        assert!(
+            codes("sphere { <0,0,0>, 1 /* a /* nested */ comment */ } // x\n\"s\\\"\"").is_empty()
+        );
     }
 
     #[test]
