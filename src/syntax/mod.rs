@@ -89,6 +89,9 @@ fn error_offset(e: &pest::error::Error<Rule>) -> usize {
 fn resync(text: &str, at: usize) -> usize {
     let bytes = text.as_bytes();
     let mut i = at.min(text.len());
+    while !text.is_char_boundary(i) {
+        i += 1;
+    }
     loop {
         match text[i..].find('\n') {
             None => return text.len(),
