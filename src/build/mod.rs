@@ -247,13 +247,7 @@ mod tests {
     use crate::span::Span;
 
     fn obj(shape: Shape) -> Object {
-        Object {
-            shape,
-            transform: None,
-            texture: None,
-            flags: ObjectFlags::default(),
-            span: Span::default(),
-        }
+        Object::new(shape, Span::default())
     }
 
     fn red() -> Arc<Texture> {

@@ -5,7 +5,7 @@ use super::cursor::{Cursor, Tok};
 use super::value::Value;
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
-use crate::scene::{Object, ObjectFlags, Shape, Texture, Transform};
+use crate::scene::{Object, Shape, Texture, Transform};
 use crate::span::Span;
 use glam::{DMat4, DVec4};
 use std::sync::Arc;
@@ -45,7 +45,7 @@ impl Evaluator<'_> {
                 if radius <= 0.0 {
                     return Err(self.bad_size(s, "sphere radius", radius));
                 }
-                new_object(Shape::Sphere { center, radius }, span)
+                Object::new(Shape::Sphere { center, radius }, span)
             }
             "plane" => {
                 let (v, s) = c.value("the plane's normal")?;
@@ -61,7 +61,7 @@ impl Evaluator<'_> {
                 }
                 c.comma();
                 let distance = self.take_float(c, "the plane's distance from the origin")?;
-                new_object(
+                Object::new(
                     Shape::Plane {
                         normal: normal.normalize(),
                         distance,
@@ -85,7 +85,7 @@ impl Evaluator<'_> {
                         .with_help("a box needs corners that differ in x, y and z"),
                     );
                 }
-                new_object(Shape::Box { min, max }, span)
+                Object::new(Shape::Box { min, max }, span)
             }
             "triangle" => {
                 let a = self.take_vec3(c, "the triangle's first corner")?;
@@ -104,7 +104,7 @@ impl Evaluator<'_> {
                         .with_help("move one corner off the line through the other two"),
                     );
                 }
-                new_object(
+                Object::new(
                     Shape::Triangle {
                         vertices: [a, b, cc],
                     },
@@ -118,7 +118,7 @@ impl Evaluator<'_> {
                         children.push(Arc::try_unwrap(o).unwrap_or_else(|a| (*a).clone()));
                     }
                 }
-                let mut obj = new_object(Shape::Union { children }, span);
+                let mut obj = Object::new(Shape::Union { children }, span);
                 self.modifiers(&mut obj, c, true);
                 if let Shape::Union { children } = &obj.shape {
                     if children.is_empty() {
@@ -345,16 +345,6 @@ fn value_of(t: &Tok) -> Value {
     match t {
         Tok::Val(v, _) | Tok::Block(_, v, _) => v.clone(),
         _ => Value::Poison,
-    }
-}
-
-fn new_object(shape: Shape, span: Span) -> Object {
-    Object {
-        shape,
-        transform: None,
-        texture: None,
-        flags: ObjectFlags::default(),
-        span,
     }
 }
 

@@ -128,6 +128,19 @@ pub struct Object {
     pub span: Span,
 }
 
+impl Object {
+    /// A shape with no transform, no texture (inherited or default) and no flags.
+    pub fn new(shape: Shape, span: Span) -> Object {
+        Object {
+            shape,
+            transform: None,
+            texture: None,
+            flags: ObjectFlags::default(),
+            span,
+        }
+    }
+}
+
 /// The shapes of this release, in object space.
 #[derive(Clone, Debug)]
 pub enum Shape {

@@ -3,8 +3,8 @@
 
 use glam::DVec3;
 use rts::scene::{
-    Camera, Colour, Finish, Light, LightKind, Object, ObjectFlags, Pattern, Pigment, Scene, Shape,
-    Texture, Transform,
+    Camera, Colour, Finish, Light, LightKind, Object, Pattern, Pigment, Scene, Shape, Texture,
+    Transform,
 };
 use rts::span::Span;
 use std::sync::Arc;
@@ -40,13 +40,7 @@ pub fn matte(ambient: f64, diffuse: f64) -> Finish {
 
 /// An object with no transform, no texture and default flags.
 pub fn object(shape: Shape) -> Object {
-    Object {
-        shape,
-        transform: None,
-        texture: None,
-        flags: ObjectFlags::default(),
-        span: Span::default(),
-    }
+    Object::new(shape, Span::default())
 }
 
 /// A sphere object.
