@@ -45,7 +45,14 @@ impl SourceFile {
 
     /// The directory relative includes are resolved against.
     pub fn dir(&self) -> Option<&Path> {
-        self.path.as_deref().and_then(Path::parent)
+        // `Path::new("a.rts").parent()` is `""`: that is the current folder.
+        self.path.as_deref().and_then(Path::parent).map(|d| {
+            if d.as_os_str().is_empty() {
+                Path::new(".")
+            } else {
+                d
+            }
+        })
     }
 }
 
@@ -115,12 +122,14 @@ impl FileAccess {
         if self.unrestricted {
             return true;
         }
-        let canon = |p: &Path| p.canonicalize().unwrap_or_else(|_| p.to_path_buf());
+        // A folder that cannot be resolved permits nothing (an empty path would
+        // otherwise be a prefix of every path).
+        let canon = |p: &Path| p.canonicalize().ok();
         scene_dir
             .into_iter()
-            .map(canon)
-            .chain(self.include_dirs.iter().map(|p| canon(p)))
-            .chain(self.allowed.iter().map(|p| canon(p)))
+            .filter_map(canon)
+            .chain(self.include_dirs.iter().filter_map(|p| canon(p)))
+            .chain(self.allowed.iter().filter_map(|p| canon(p)))
             .any(|dir| path.starts_with(dir))
     }
 }

@@ -96,16 +96,22 @@ impl Evaluator<'_> {
     fn resolve(&mut self, name: &str, span: Span) -> R<FileId> {
         let here = self.include_stack.last().copied().unwrap_or(FileId(0));
         let mut dirs: Vec<PathBuf> = Vec::new();
+        // The including file's folder, then the scene's folder (POV-Ray resolves
+        // relative to the scene), then the -I folders.
         if let Some(d) = self.sources.get(here).dir() {
             dirs.push(d.to_path_buf());
-        } else if let Some(d) = &self.scene_dir {
-            dirs.push(d.clone());
+        }
+        if let Some(d) = &self.scene_dir {
+            if !dirs.contains(d) {
+                dirs.push(d.clone());
+            }
         }
         dirs.extend(self.options.access.include_dirs.iter().cloned());
         let mut tried = Vec::new();
         for dir in &dirs {
             let path = dir.join(name);
-            tried.push(path.display().to_string());
+            let shown = path.display().to_string();
+            tried.push(shown.strip_prefix("./").unwrap_or(&shown).to_string());
             if !path.is_file() {
                 continue;
             }
@@ -120,13 +126,16 @@ impl Evaluator<'_> {
                     span,
                     format!("`{}` is outside the folders this scene may read", canon.display()),
                 )
+                .with_label("outside the scene's folders")
                 .with_help("scenes read only from their own folder, -I folders and the built-in library; allow more with --allow-path DIR")
                 .into());
             }
             if let Some(id) = self.sources.find_path(&canon) {
                 return Ok(id);
             }
-            return match load_file(self.sources, &canon, path.display().to_string()) {
+            let shown = path.display().to_string();
+            let shown = shown.strip_prefix("./").unwrap_or(&shown).to_string();
+            return match load_file(self.sources, &canon, shown) {
                 Ok(id) => Ok(id),
                 Err(LoadError::Utf8(d)) => Err((*d).into()),
                 Err(LoadError::Io(e)) => Err(Diagnostic::error(
@@ -161,7 +170,7 @@ impl Evaluator<'_> {
             .with_label("no such file")
             .with_note(format!("tried: {}", tried.join(", ")))
             .with_note(format!(
-                "search folders: the including file's folder, then -I folders ({}), then the built-in library ({})",
+                "search folders: the including file's folder, the scene's folder, then -I folders ({}), then the built-in library ({})",
                 if self.options.access.include_dirs.is_empty() {
                     "none given".to_string()
                 } else {
