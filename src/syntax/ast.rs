@@ -388,6 +388,8 @@ pub enum Arg {
     Expr(Expr),
     /// A block, e.g. `texture { … }` passed to a macro.
     Block(Block),
+    /// Nothing: `M(1, , 3)` leaves an optional macro parameter undefined.
+    Empty(Span),
 }
 
 impl Arg {
@@ -396,6 +398,7 @@ impl Arg {
         match self {
             Arg::Expr(e) => e.span,
             Arg::Block(b) => b.span,
+            Arg::Empty(s) => *s,
         }
     }
 }

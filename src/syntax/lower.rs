@@ -423,12 +423,17 @@ impl Lowerer {
                 let mut inner = p.into_inner();
                 let n = inner.next().expect("name");
                 let name_span = self.span(&n);
-                let args = inner
+                let mut args: Vec<Arg> = inner
                     .map(|a| match a.as_rule() {
                         Rule::block => Arg::Block(self.block(a)),
+                        Rule::empty_arg => Arg::Empty(self.span(&a)),
                         _ => Arg::Expr(self.expr(a)),
                     })
                     .collect();
+                // `f()` is no arguments, not one empty one.
+                if let [Arg::Empty(_)] = args.as_slice() {
+                    args.clear();
+                }
                 Expr {
                     kind: ExprKind::Call {
                         name: intern(n.as_str()),

@@ -163,6 +163,11 @@ fn syntax_error(text: &str, file: FileId, at: usize, e: &pest::error::Error<Rule
     if expected.len() > 1 {
         expected.retain(|n| *n != "a statement");
     }
+    // The tokens that start an expression say nothing more than "an expression".
+    if expected.contains(&"an expression") {
+        const STARTS: &[&str] = &["`(`", "`-`, `+` or `!`", "a string", "a vector `<…>`"];
+        expected.retain(|n| !STARTS.contains(n));
+    }
     expected.sort_unstable();
     expected.dedup();
     let (found, len) = token_at(text, at);

@@ -60,6 +60,8 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         | Rule::primary
         | Rule::paren
         | Rule::arg
+        | Rule::arg_slot
+        | Rule::empty_arg
         | Rule::array_elem => "an expression",
         Rule::question => "`?`",
         Rule::colon => "`:`",
