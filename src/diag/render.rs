@@ -77,9 +77,19 @@ pub fn human(diag: &Diagnostic, sources: &SourceMap, color: bool) -> String {
     };
     let handler = GraphicalReportHandler::new_themed(theme).with_width(100);
     let mut out = String::new();
-    let report = Report::from_diag(diag, sources);
+    let mut report = Report::from_diag(diag, sources);
+    // The chain is rendered as plain notes after the report (miette would head each
+    // related report with "Advice:").
+    let related = std::mem::take(&mut report.related);
     if handler.render_report(&mut out, &report).is_err() {
         return short(diag, sources);
+    }
+    for r in &related {
+        let mut note = String::new();
+        if handler.render_report(&mut note, r).is_ok() {
+            out.push('\n');
+            out.push_str(&note);
+        }
     }
     out
 }

@@ -183,6 +183,8 @@ impl Cursor {
     /// Records keyword `kw` as given; a second time is reported as a duplicate.
     pub(crate) fn once(&mut self, kw: &'static str, span: Span) -> R<()> {
         if self.seen.contains(&kw) {
+            // The duplicate's value is still in the stream: do not report it again.
+            self.poisoned = true;
             return Err(Diagnostic::error(
                 codes::DUPLICATE_PARAMETER,
                 span,
@@ -259,7 +261,7 @@ impl Evaluator<'_> {
         Diagnostic::error(
             codes::UNEXPECTED_ITEM,
             tok.span(),
-            format!("unexpected {} in `{}`", tok.describe(), c.block),
+            format!("{} does not belong in `{}`", tok.describe(), c.block),
         )
         .with_label("does not belong here")
         .with_help(format!("`{}` accepts: {}", c.block, valid.join(", ")))

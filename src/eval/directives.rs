@@ -194,6 +194,7 @@ impl Evaluator<'_> {
                             p.span,
                             format!("macro `{}` has two parameters named `{}`", m.name, p.name),
                         )
+                        .with_label("second one")
                         .with_secondary(first.span, "first one here")
                         .with_help("rename one of them")
                         .into());

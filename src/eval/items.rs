@@ -199,15 +199,32 @@ impl Evaluator<'_> {
             .into());
         }
         let mut values = Vec::with_capacity(args.len());
-        for a in args {
+        for (a, p) in args.iter().zip(&m.params) {
             values.push(match a {
-                Arg::Expr(e) => self.expr(e)?,
-                Arg::Block(b) => self.block_value(b)?,
+                Arg::Expr(e) => Some(self.expr(e)?),
+                Arg::Block(b) => Some(self.block_value(b)?),
+                Arg::Empty(_) if p.optional => None,
+                Arg::Empty(s) => {
+                    return Err(Diagnostic::error(
+                        codes::MISSING_VALUE,
+                        *s,
+                        format!("no value for parameter `{}` of macro `{}`", p.name, m.name),
+                    )
+                    .with_label("empty argument")
+                    .with_secondary(m.name_span, "macro defined here")
+                    .with_help(format!(
+                        "give a value, or declare the parameter as `optional {}`",
+                        p.name
+                    ))
+                    .into())
+                }
             });
         }
         self.scope.push();
         for (p, (v, a)) in m.params.iter().zip(values.into_iter().zip(args)) {
-            self.scope.local(p.name, v, a.span());
+            if let Some(v) = v {
+                self.scope.local(p.name, v, a.span());
+            }
         }
         self.macro_depth += 1;
         self.trace.push(Label {
@@ -238,6 +255,16 @@ impl Evaluator<'_> {
                 match a {
                     Arg::Expr(e) => vals.push((self.expr(e)?, e.span)),
                     Arg::Block(b) => vals.push((self.block_value(b)?, b.span)),
+                    Arg::Empty(s) => {
+                        return Err(Diagnostic::error(
+                            codes::MISSING_VALUE,
+                            *s,
+                            "empty argument to a built-in function",
+                        )
+                        .with_label("a value is missing here")
+                        .with_help("only optional macro parameters may be left empty")
+                        .into())
+                    }
                 }
             }
             return self.call_builtin(name.0 as usize, span, &vals);

@@ -184,7 +184,7 @@ impl Evaluator<'_> {
                 Tok::Val(v, span) if pattern_given => Err(Diagnostic::error(
                     codes::UNEXPECTED_ITEM,
                     span,
-                    format!("unexpected {} after the pigment's pattern", v.kind()),
+                    format!("{} does not belong after the pigment's pattern", v.kind()),
                 )
                 .with_help("a pigment has one colour or pattern; use `checker A, B` for two")
                 .into()),

@@ -164,11 +164,50 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) stopped: bool,
 }
 
+/// The longest include/macro chain shown in full: the innermost and outermost steps
+/// are kept around a gap.
+const MAX_TRACE: usize = 12;
+
+/// The chain innermost first, with runs of the same step (recursion) merged into one
+/// "(N times)" step and the middle of a very long chain left out. Returns the steps
+/// and how many were left out.
+fn compress_trace(trace: &[Label]) -> (Vec<Label>, usize) {
+    let mut steps: Vec<(Label, usize)> = Vec::new();
+    for l in trace.iter().rev() {
+        match steps.last_mut() {
+            Some((last, n)) if last.span == l.span && last.message == l.message => *n += 1,
+            _ => steps.push((l.clone(), 1)),
+        }
+    }
+    let mut out: Vec<Label> = steps
+        .into_iter()
+        .map(|(mut l, n)| {
+            if n > 1 {
+                l.message = format!("{} ({n} times)", l.message);
+            }
+            l
+        })
+        .collect();
+    let mut omitted = 0;
+    if out.len() > MAX_TRACE {
+        let keep_tail = MAX_TRACE / 2;
+        omitted = out.len() - MAX_TRACE;
+        out.drain(MAX_TRACE - keep_tail..out.len() - keep_tail);
+    }
+    (out, omitted)
+}
+
 impl Evaluator<'_> {
     /// Records a failure with the current include/macro chain.
     pub(crate) fn report(&mut self, fail: Fail) {
         if let Some(mut d) = fail.0 {
-            d.trace.extend(self.trace.iter().rev().cloned());
+            let (trace, omitted) = compress_trace(&self.trace);
+            d.trace.extend(trace);
+            if omitted > 0 {
+                d.notes.push(format!(
+                    "{omitted} more steps of the include/macro chain are not shown"
+                ));
+            }
             self.diags.push(*d);
         }
     }
