@@ -239,6 +239,23 @@ impl Evaluator<'_> {
 
     fn finish_scene(mut self) -> Evaluated {
         if !crate::diag::has_errors(&self.diags) {
+            let main = self.include_stack[0];
+            for (name, span) in self.scope.unused_globals() {
+                if span.file != main || name.name().starts_with('_') {
+                    continue;
+                }
+                self.diags.push(
+                    Diagnostic::warning(
+                        codes::UNUSED_DECLARE,
+                        span,
+                        format!("`{name}` is declared but never used"),
+                    )
+                    .with_label("never used after this")
+                    .with_help(format!(
+                        "remove the declaration, or name it `_{name}` to keep it unused on purpose"
+                    )),
+                );
+            }
             if self.scene.global.assumed_gamma.is_none() {
                 self.diags.push(
                     Diagnostic::warning(codes::NO_GAMMA, Span::new(self.include_stack[0], 0, 0), "the scene does not set assumed_gamma")

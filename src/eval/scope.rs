@@ -5,12 +5,24 @@ use super::Value;
 use crate::span::Span;
 use crate::syntax::Sym;
 use rustc_hash::FxHashMap;
+use std::cell::Cell;
 
-/// One binding: the value and where it was declared.
+/// One binding: the value, where it was declared and whether it was ever read.
 #[derive(Clone, Debug)]
 pub(crate) struct Binding {
     pub(crate) value: Value,
     pub(crate) span: Span,
+    pub(crate) used: Cell<bool>,
+}
+
+impl Binding {
+    fn new(value: Value, span: Span) -> Binding {
+        Binding {
+            value,
+            span,
+            used: Cell::new(false),
+        }
+    }
 }
 
 /// The stack of scopes; index 0 is global.
@@ -25,9 +37,22 @@ impl Scopes {
         }
     }
 
-    /// Looks `name` up, innermost scope first.
+    /// Looks `name` up, innermost scope first, and marks it as used.
     pub(crate) fn get(&self, name: Sym) -> Option<&Binding> {
-        self.frames.iter().rev().find_map(|f| f.get(&name))
+        let b = self.frames.iter().rev().find_map(|f| f.get(&name))?;
+        b.used.set(true);
+        Some(b)
+    }
+
+    /// Global bindings never read, in declaration order of their spans.
+    pub(crate) fn unused_globals(&self) -> Vec<(Sym, Span)> {
+        let mut v: Vec<(Sym, Span)> = self.frames[0]
+            .iter()
+            .filter(|(_, b)| !b.used.get() && !matches!(b.value, Value::Macro(_)))
+            .map(|(n, b)| (*n, b.span))
+            .collect();
+        v.sort_by_key(|(_, s)| (s.file.0, s.start));
+        v
     }
 
     /// Mutable access to the innermost binding of `name`.
@@ -41,7 +66,7 @@ impl Scopes {
             b.value = value;
             b.span = span;
         } else {
-            self.frames[0].insert(name, Binding { value, span });
+            self.frames[0].insert(name, Binding::new(value, span));
         }
     }
 
@@ -50,7 +75,7 @@ impl Scopes {
         self.frames
             .last_mut()
             .expect("global scope")
-            .insert(name, Binding { value, span });
+            .insert(name, Binding::new(value, span));
     }
 
     /// `#undef`: removes the innermost binding; false if there was none.

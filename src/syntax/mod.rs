@@ -187,7 +187,15 @@ fn syntax_error(text: &str, file: FileId, at: usize, e: &pest::error::Error<Rule
     } else if expected.contains(&"`,`") && found.starts_with("`<") {
         d = d.with_help("separate vectors with commas: `<0,0,0>, <1,1,1>`");
     }
-    if let Some(word) = found.strip_prefix('`').and_then(|s| s.strip_suffix('`')) {
+    let word = found.strip_prefix('`').and_then(|s| s.strip_suffix('`'));
+    if let Some(word) = word.filter(|w| keywords::KEYWORDS.contains(w)) {
+        if expected.contains(&"a name") {
+            return d.with_help(format!(
+                "`{word}` is a keyword and cannot be a name; choose another (a capital first letter never clashes, e.g. `My_{word}`)"
+            ));
+        }
+    }
+    if let Some(word) = word {
         if let Some(s) = crate::diag::did_you_mean(word, keywords::KEYWORDS.iter().copied()) {
             d = d.with_help(format!("did you mean the keyword `{s}`?"));
         }
