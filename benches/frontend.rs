@@ -1,3 +1,4 @@
+#![allow(missing_docs)] // criterion_group! generates an undocumented function
 //! Front-end speed: parse + evaluate `#while`-generated sphere scenes.
 //! Targets (issue 2): 10,000 spheres in ≤ 10 ms, 1,000,000 in ≤ 1 s under 300 MB.
 //! Run with `cargo bench --bench frontend`.

@@ -34,21 +34,12 @@ impl Colour {
 }
 
 /// `texture { pigment { … } finish { … } }`.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Default)]
 pub struct Texture {
     /// The colour pattern.
     pub pigment: Pigment,
     /// How the surface responds to light.
     pub finish: Finish,
-}
-
-impl Default for Texture {
-    fn default() -> Self {
-        Texture {
-            pigment: Pigment::default(),
-            finish: Finish::default(),
-        }
-    }
 }
 
 /// `pigment { PATTERN … [transforms] }`.

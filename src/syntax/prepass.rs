@@ -109,10 +109,8 @@ impl Scanner<'_> {
                         return;
                     }
                 }
-                b'}' | b')' | b']' => {
-                    if !self.close(c, i) {
-                        return;
-                    }
+                b'}' | b')' | b']' if !self.close(c, i) => {
+                    return;
                 }
                 b'<' => {
                     if matches!(
@@ -158,10 +156,8 @@ impl Scanner<'_> {
                     i += 1;
                     continue;
                 }
-                b'#' => {
-                    if !self.directive(i) {
-                        return;
-                    }
+                b'#' if !self.directive(i) => {
+                    return;
                 }
                 _ if c.is_ascii_alphabetic() || c == b'_' => {
                     let start = i;
