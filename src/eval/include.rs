@@ -71,17 +71,27 @@ impl Evaluator<'_> {
                 .with_help("guard the file with `#ifndef (My_File_Inc) #declare My_File_Inc = 1; … #end`, or remove the include")
                 .into());
         }
-        let text = self.sources.get(id).text.clone();
-        let (file, diags) = crate::syntax::parse(&text, id);
-        let had_errors = crate::diag::has_errors(&diags);
         self.trace.push(Label {
             span: dspan,
             message: format!("in `{}` included from here", self.sources.get(id).name),
         });
-        for d in diags {
-            self.report(d.into());
-        }
-        if !had_errors {
+        // A file included many times (say in a loop) is parsed once; its syntax
+        // errors are reported the first time.
+        let parsed = match self.parsed_includes.get(&id) {
+            Some(p) => p.clone(),
+            None => {
+                let text = self.sources.get(id).text.clone();
+                let (file, diags) = crate::syntax::parse(&text, id);
+                let ok = !crate::diag::has_errors(&diags);
+                for d in diags {
+                    self.report(d.into());
+                }
+                let p = ok.then(|| std::rc::Rc::new(file));
+                self.parsed_includes.insert(id, p.clone());
+                p
+            }
+        };
+        if let Some(file) = parsed {
             self.include_stack.push(id);
             self.scope.push();
             self.expand(&file.items, out);

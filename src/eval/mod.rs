@@ -117,6 +117,7 @@ pub fn eval(
         scene_dir,
         rand_streams: Vec::new(),
         stopped: false,
+        parsed_includes: Default::default(),
     };
     ev.define_command_line();
     ev.run_top(&file.items);
@@ -162,6 +163,8 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) rand_streams: Vec<u64>,
     /// Set by `#error` and limits: evaluation stops.
     pub(crate) stopped: bool,
+    /// Include files parsed so far (`None`: it had syntax errors, already reported).
+    pub(crate) parsed_includes: rustc_hash::FxHashMap<FileId, Option<std::rc::Rc<ast::File>>>,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps
