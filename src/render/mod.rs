@@ -5,13 +5,19 @@
 
 mod camera;
 mod film;
+mod lights;
 mod pigment;
+mod sampler;
 mod shade;
+mod stats;
 
 pub use camera::primary_ray;
 pub use film::Film;
+pub use lights::{incident, Incident};
 pub use pigment::{checker_index, evaluate as evaluate_pigment, CHECKER_OFFSET};
-pub use shade::{metallic_tint, metallic_weight, reflection_amount, trace};
+pub use sampler::Sampler;
+pub use shade::{metallic_tint, metallic_weight, reflection_amount, trace, TraceCtx};
+pub use stats::RayStats;
 
 use crate::build::{RayKind, World};
 use glam::DVec3;
@@ -59,6 +65,13 @@ pub fn render(world: &World, opts: &RenderOptions) -> Film {
 
 /// The working-space colour of pixel (`i`, `j`), `j = 0` at the top.
 pub fn render_pixel(world: &World, i: u32, j: u32, width: u32, height: u32) -> DVec3 {
+    let mut sampler = Sampler::new(0, 0, i, j, 0);
+    let mut stats = RayStats::default();
+    let mut ctx = TraceCtx {
+        sampler: &mut sampler,
+        stats: &mut stats,
+    };
     let ray = primary_ray(&world.camera, i, j, width, height);
-    trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0)
+    ctx.stats.camera += 1;
+    trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0, &mut ctx)
 }

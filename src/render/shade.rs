@@ -1,10 +1,22 @@
 //! POV-Ray 3.7's classic shading model: ambient, diffuse, Phong and Blinn
 //! highlights, hard shadows and mirror reflection.
 
+use super::lights;
 use super::pigment;
+use super::sampler::Sampler;
+use super::stats::RayStats;
 use crate::build::{Primitive, Ray, RayKind, World};
-use crate::scene::{Finish, LightKind, Reflection};
+use crate::scene::{Finish, Reflection};
 use glam::DVec3;
+
+/// What one camera sample carries down its tree of rays: its sample values and
+/// its ray counters.
+pub struct TraceCtx<'a> {
+    /// Sample values for this (pixel, sample, frame, seed).
+    pub sampler: &'a mut Sampler,
+    /// Rays traced so far.
+    pub stats: &'a mut RayStats,
+}
 
 /// POV-Ray's "metallic" weight at angle of incidence `cos_incidence` (cosine against
 /// the facing normal): about 0 at normal incidence, 1 at grazing.
@@ -56,18 +68,27 @@ pub fn trace(
     kind: RayKind,
     level: u32,
     weight: f64,
+    ctx: &mut TraceCtx,
 ) -> DVec3 {
     match world.intersect(ray, t_min, f64::INFINITY, kind) {
         None => world.background,
         Some(hit) => {
             let prim = &world.primitives[hit.prim as usize];
-            shade(world, prim, ray, ray.at(hit.t), level, weight)
+            shade(world, prim, ray, ray.at(hit.t), level, weight, ctx)
         }
     }
 }
 
 /// Colour of `prim` at world point `p`, seen along `ray`.
-fn shade(world: &World, prim: &Primitive, ray: &Ray, p: DVec3, level: u32, weight: f64) -> DVec3 {
+fn shade(
+    world: &World,
+    prim: &Primitive,
+    ray: &Ray,
+    p: DVec3,
+    level: u32,
+    weight: f64,
+    ctx: &mut TraceCtx,
+) -> DVec3 {
     let geo_n = prim.normal(p);
     let d = ray.dir.normalize();
     let n = if geo_n.dot(d) > 0.0 { -geo_n } else { geo_n };
@@ -78,29 +99,9 @@ fn shade(world: &World, prim: &Primitive, ray: &Ray, p: DVec3, level: u32, weigh
 
     let mut out = f.ambient * world.global.ambient_light * colour;
     for light in &world.lights {
-        let (l, dist) = match light.kind {
-            LightKind::Point => {
-                let to = light.location - p;
-                let dist = to.length();
-                (to / dist, dist)
-            }
-            LightKind::Parallel { point_at } => {
-                let l = (light.location - point_at).normalize();
-                // Only what lies before the plane through `location` casts shadows.
-                (l, (light.location - p).dot(l).max(0.0))
-            }
-        };
-        let cos_l = n.dot(l);
-        if cos_l.is_nan() || cos_l <= 0.0 {
-            continue;
+        if let Some(inc) = lights::incident(world, light, p, geo_n, n, ctx) {
+            out += direct(f, colour, inc.colour, n, inc.dir, d, n.dot(inc.dir));
         }
-        if !light.shadowless {
-            let (shadow_ray, eps) = Ray::secondary(p, geo_n, l);
-            if dist > eps && world.occluded(&shadow_ray, eps, dist - eps) {
-                continue;
-            }
-        }
-        out += direct(f, colour, light.colour, n, l, d, cos_l);
     }
 
     let r = &f.reflection;
@@ -115,6 +116,7 @@ fn shade(world: &World, prim: &Primitive, ray: &Ray, p: DVec3, level: u32, weigh
         {
             let dir = d - 2.0 * d.dot(n) * n;
             let (refl, eps) = Ray::secondary(p, geo_n, dir);
+            ctx.stats.reflected += 1;
             out += amount
                 * trace(
                     world,
@@ -123,6 +125,7 @@ fn shade(world: &World, prim: &Primitive, ray: &Ray, p: DVec3, level: u32, weigh
                     RayKind::Reflected,
                     level + 1,
                     next_weight,
+                    ctx,
                 );
         }
     }

@@ -6,16 +6,18 @@
 //! without reshaping what exists.
 
 mod camera;
+mod light;
 mod material;
+mod object;
 mod transform;
 
 pub use camera::{Camera, CameraKind};
+pub use light::{Light, LightKind};
 pub use material::{Colour, Finish, Pattern, Pigment, Reflection, Texture};
+pub use object::{Object, ObjectFlags, Shape};
 pub use transform::Transform;
 
-use crate::span::Span;
 use glam::DVec3;
-use std::sync::Arc;
 
 /// A whole evaluated scene: what one frame of a `.rts` file describes.
 #[derive(Clone, Debug)]
@@ -68,112 +70,4 @@ impl Default for GlobalSettings {
             adc_bailout: 1.0 / 255.0,
         }
     }
-}
-
-/// `light_source { LOCATION, COLOUR [parallel point_at P] }`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Light {
-    /// Position in world space.
-    pub location: DVec3,
-    /// Colour, used as intensity (may exceed 1).
-    pub colour: DVec3,
-    /// What kind of light this is.
-    pub kind: LightKind,
-    /// `shadowless`: this light casts no shadows.
-    pub shadowless: bool,
-    /// Where the light was written.
-    pub span: Span,
-}
-
-/// The kinds of light source.
-#[derive(Clone, Debug, PartialEq)]
-pub enum LightKind {
-    /// An omnidirectional point light.
-    Point,
-    /// `parallel`: light arrives everywhere from the direction `location - point_at`;
-    /// only objects in front of the plane through `location` cast shadows.
-    Parallel {
-        /// The point the light shines at (`point_at`, default origin).
-        point_at: DVec3,
-    },
-}
-
-/// Per-object flags (`no_shadow`, `no_image`, …) kept together.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct ObjectFlags {
-    /// `no_shadow`: the object casts no shadow.
-    pub no_shadow: bool,
-    /// `no_image`: invisible to camera rays.
-    pub no_image: bool,
-    /// `no_reflection`: invisible in reflections.
-    pub no_reflection: bool,
-    /// `inverse`: inside and outside swapped.
-    pub inverse: bool,
-}
-
-/// One object: a shape, its placement and its material.
-#[derive(Clone, Debug)]
-pub struct Object {
-    /// The geometry, in object space.
-    pub shape: Shape,
-    /// `world_from_object`, the product of the object's `translate rotate scale matrix`
-    /// in the order written; `None` for the identity.
-    pub transform: Option<Arc<Transform>>,
-    /// The object's texture; `None` inherits from an enclosing CSG object or the
-    /// `#default` texture that was in force.
-    pub texture: Option<Arc<Texture>>,
-    /// Flags such as `no_shadow`.
-    pub flags: ObjectFlags,
-    /// Where the object was written.
-    pub span: Span,
-}
-
-impl Object {
-    /// A shape with no transform, no texture (inherited or default) and no flags.
-    pub fn new(shape: Shape, span: Span) -> Object {
-        Object {
-            shape,
-            transform: None,
-            texture: None,
-            flags: ObjectFlags::default(),
-            span,
-        }
-    }
-}
-
-/// The shapes of this release, in object space.
-#[derive(Clone, Debug)]
-pub enum Shape {
-    /// `sphere { CENTER, RADIUS }`.
-    Sphere {
-        /// Centre.
-        center: DVec3,
-        /// Radius (> 0).
-        radius: f64,
-    },
-    /// `plane { NORMAL, DISTANCE }`: the points p with `p·n = distance`, inside below.
-    Plane {
-        /// Unit normal.
-        normal: DVec3,
-        /// Offset along the normal.
-        distance: f64,
-    },
-    /// `box { CORNER1, CORNER2 }` with the corners sorted so `min <= max`.
-    Box {
-        /// Lowest corner.
-        min: DVec3,
-        /// Highest corner.
-        max: DVec3,
-    },
-    /// `triangle { A, B, C }`.
-    Triangle {
-        /// Vertices.
-        vertices: [DVec3; 3],
-    },
-    /// `union { OBJECT… }`: the children keep their own transforms, which are applied
-    /// before the union's.
-    Union {
-        /// The member objects.
-        children: Vec<Object>,
-    },
 }
