@@ -76,7 +76,9 @@ fn diffuse_of_a_plane_is_n_dot_l() {
     );
     for j in 0..9 {
         for i in 0..9 {
-            let ray = rts::render::primary_ray(&world.camera, i, j, 9, 9);
+            let mut sampler = rts::render::Sampler::new(0, 0, i, j, 0);
+            let (x, y) = (f64::from(i) + 0.5, f64::from(j) + 0.5);
+            let ray = rts::render::primary_ray(&world.camera, x, y, 9, 9, &mut sampler).unwrap();
             let p = ray.at(5.0 / -ray.dir.y);
             let expect = (light - p).normalize().y;
             assert!((film.get(i, j).x - expect).abs() < EPS, "{i},{j}");

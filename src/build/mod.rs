@@ -17,9 +17,9 @@ pub use ray::{surface_offset, Ray};
 pub use shape::{Hit, PrimShape, Primitive};
 
 use crate::scene::{
-    Camera, GlobalSettings, Light, Object, ObjectFlags, Scene, Shape, Texture, Transform,
+    Camera, GlobalSettings, Interior, Light, Object, ObjectFlags, Scene, Shape, Texture, Transform,
 };
-use glam::DVec3;
+use glam::{DMat4, DVec2, DVec3};
 use std::sync::Arc;
 
 /// What a ray is for, which decides the objects it can see.
@@ -73,6 +73,7 @@ pub fn build(scene: &Scene) -> World {
     let inherited = Inherited {
         texture: default_texture,
         texture_space: None,
+        interior: None,
         flags: ObjectFlags::default(),
     };
     for obj in &scene.objects {
@@ -104,6 +105,7 @@ struct Inherited {
     texture: Arc<Texture>,
     /// `world_from_owner` of the object the texture belongs to.
     texture_space: Option<Transform>,
+    interior: Option<Arc<Interior>>,
     flags: ObjectFlags,
 }
 
@@ -130,6 +132,7 @@ fn flatten(obj: &Object, parent: Option<&Transform>, inh: &Inherited, out: &mut 
         } else {
             inh.texture_space
         },
+        interior: obj.interior.clone().or_else(|| inh.interior.clone()),
         flags: or_flags(inh.flags, obj.flags),
     };
     let shape = match &obj.shape {
@@ -170,11 +173,53 @@ fn primitive(shape: PrimShape, transform: Option<Transform>, inh: &Inherited) ->
         transform,
         texture: inh.texture.clone(),
         texture_from_world: inh.texture_space.map(|t| t.inverse),
+        interior: inh.interior.clone(),
         flags: inh.flags,
     }
 }
 
+/// What the shader needs to know about a hit.
+#[derive(Clone, Copy, Debug)]
+pub struct SurfaceHit<'a> {
+    /// The world-space point hit.
+    pub p: DVec3,
+    /// Unit world-space geometric normal, outward for closed shapes (not flipped to
+    /// face the ray). Secondary rays leave along this one.
+    pub geo_normal: DVec3,
+    /// Unit world-space shading normal before any `normal { }` perturbation: the
+    /// geometric normal, or the interpolated one of a smooth triangle.
+    pub normal: DVec3,
+    /// The shape's own surface coordinates, for `uv_mapping`; `None` for shapes
+    /// without a uv parameterisation.
+    pub uv: Option<DVec2>,
+    /// The texture in force.
+    pub texture: &'a Arc<Texture>,
+    /// Maps world points into the texture's space.
+    pub texture_from_world: Option<&'a DMat4>,
+    /// The interior in force; `None` is POV-Ray's default.
+    pub interior: Option<&'a Arc<Interior>>,
+    /// The primitive's flags.
+    pub flags: ObjectFlags,
+}
+
 impl World {
+    /// The surface facts at `hit`, found along `ray`.
+    pub fn surface(&self, ray: &Ray, hit: &Hit) -> SurfaceHit<'_> {
+        let prim = &self.primitives[hit.prim as usize];
+        let p = ray.at(hit.t);
+        let geo_normal = prim.normal(p);
+        SurfaceHit {
+            p,
+            geo_normal,
+            normal: geo_normal,
+            uv: None,
+            texture: &prim.texture,
+            texture_from_world: prim.texture_from_world.as_ref(),
+            interior: prim.interior.as_ref(),
+            flags: prim.flags,
+        }
+    }
+
     /// The nearest hit in `(t_min, t_max)` among primitives `kind` can see.
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64, kind: RayKind) -> Option<Hit> {
         let mut best: Option<Hit> = None;

@@ -1,7 +1,7 @@
 //! Flattened primitives and their ray intersections.
 
 use super::{Aabb, Ray};
-use crate::scene::{ObjectFlags, Texture, Transform};
+use crate::scene::{Interior, ObjectFlags, Texture, Transform};
 use glam::{DMat4, DVec3};
 use std::sync::Arc;
 
@@ -53,6 +53,8 @@ pub struct Primitive {
     /// Maps world points into the texture's space (the space of the object that
     /// owns the texture); the pigment's own transform is applied after this.
     pub texture_from_world: Option<DMat4>,
+    /// The interior in force (own or inherited); `None` is POV-Ray's default.
+    pub interior: Option<Arc<Interior>>,
     /// Visibility and shadow flags (inherited flags are OR-ed in).
     pub flags: ObjectFlags,
     /// World-space bounds; `None` when unbounded (planes).

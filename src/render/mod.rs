@@ -71,7 +71,10 @@ pub fn render_pixel(world: &World, i: u32, j: u32, width: u32, height: u32) -> D
         sampler: &mut sampler,
         stats: &mut stats,
     };
-    let ray = primary_ray(&world.camera, i, j, width, height);
+    let (x, y) = (f64::from(i) + 0.5, f64::from(j) + 0.5);
+    let Some(ray) = primary_ray(&world.camera, x, y, width, height, ctx.sampler) else {
+        return DVec3::ZERO;
+    };
     ctx.stats.camera += 1;
     trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0, &mut ctx)
 }

@@ -5,7 +5,7 @@ use super::lights;
 use super::pigment;
 use super::sampler::Sampler;
 use super::stats::RayStats;
-use crate::build::{Primitive, Ray, RayKind, World};
+use crate::build::{Ray, RayKind, SurfaceHit, World};
 use crate::scene::{Finish, Reflection};
 use glam::DVec3;
 
@@ -73,8 +73,8 @@ pub fn trace(
     match world.intersect(ray, t_min, f64::INFINITY, kind) {
         None => world.background,
         Some(hit) => {
-            let prim = &world.primitives[hit.prim as usize];
-            shade(world, prim, ray, ray.at(hit.t), level, weight, ctx)
+            let surface = world.surface(ray, &hit);
+            shade(world, &surface, ray, level, weight, ctx)
         }
     }
 }
@@ -82,18 +82,21 @@ pub fn trace(
 /// Colour of `prim` at world point `p`, seen along `ray`.
 fn shade(
     world: &World,
-    prim: &Primitive,
+    s: &SurfaceHit,
     ray: &Ray,
-    p: DVec3,
     level: u32,
     weight: f64,
     ctx: &mut TraceCtx,
 ) -> DVec3 {
-    let geo_n = prim.normal(p);
+    let (p, geo_n) = (s.p, s.geo_normal);
     let d = ray.dir.normalize();
-    let n = if geo_n.dot(d) > 0.0 { -geo_n } else { geo_n };
-    let tex = &*prim.texture;
-    let tp = prim.texture_from_world.map_or(p, |m| m.transform_point3(p));
+    let n = if s.normal.dot(d) > 0.0 {
+        -s.normal
+    } else {
+        s.normal
+    };
+    let tex = &**s.texture;
+    let tp = s.texture_from_world.map_or(p, |m| m.transform_point3(p));
     let colour = pigment::evaluate(&tex.pigment, tp).rgb;
     let f = &tex.finish;
 

@@ -136,3 +136,27 @@ impl Default for Finish {
         }
     }
 }
+
+/// `interior { ior fade_distance fade_power }`: what is inside a surface, for rays
+/// that pass through it (filter/transmit).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Interior {
+    /// `ior`: index of refraction (1 = no bending).
+    pub ior: f64,
+    /// `fade_distance`: distance at which light inside has faded to half (0 = no
+    /// fading).
+    pub fade_distance: f64,
+    /// `fade_power`: exponent of the fading (0 = no fading).
+    pub fade_power: f64,
+}
+
+impl Default for Interior {
+    /// POV-Ray's default interior: ior 1, no fading.
+    fn default() -> Self {
+        Interior {
+            ior: 1.0,
+            fade_distance: 0.0,
+            fade_power: 0.0,
+        }
+    }
+}

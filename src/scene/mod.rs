@@ -13,7 +13,7 @@ mod transform;
 
 pub use camera::{Camera, CameraKind};
 pub use light::{Light, LightKind};
-pub use material::{Colour, Finish, Pattern, Pigment, Reflection, Texture};
+pub use material::{Colour, Finish, Interior, Pattern, Pigment, Reflection, Texture};
 pub use object::{Object, ObjectFlags, Shape};
 pub use transform::Transform;
 

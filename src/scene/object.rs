@@ -1,6 +1,6 @@
 //! Objects: shapes with placement, material and flags.
 
-use super::{Texture, Transform};
+use super::{Interior, Texture, Transform};
 use crate::span::Span;
 use glam::DVec3;
 use std::sync::Arc;
@@ -29,6 +29,9 @@ pub struct Object {
     /// The object's texture; `None` inherits from an enclosing CSG object or the
     /// `#default` texture that was in force.
     pub texture: Option<Arc<Texture>>,
+    /// `interior { … }`; `None` inherits from an enclosing CSG object, else
+    /// POV-Ray's default interior.
+    pub interior: Option<Arc<Interior>>,
     /// Flags such as `no_shadow`.
     pub flags: ObjectFlags,
     /// Where the object was written.
@@ -42,6 +45,7 @@ impl Object {
             shape,
             transform: None,
             texture: None,
+            interior: None,
             flags: ObjectFlags::default(),
             span,
         }
