@@ -1,11 +1,16 @@
 //! Writing a [`Film`] to an image file.
 
+mod format;
 mod gamma;
 
+pub use format::{Format, ParseFormatError};
 pub use gamma::{decode_working, to_file, Gamma, ParseGammaError};
 
 use crate::render::Film;
+use image::codecs::hdr::HdrEncoder;
+use image::codecs::openexr::OpenExrEncoder;
 use image::codecs::png::PngEncoder;
+use image::codecs::pnm::{PnmEncoder, PnmSubtype, SampleEncoding};
 use image::{ExtendedColorType, ImageEncoder};
 use std::fmt;
 use std::fs::File;
@@ -69,15 +74,103 @@ pub fn encode_samples(film: &Film, opts: &OutputOptions) -> Vec<f64> {
         .collect()
 }
 
-/// Writes `film` as a PNG at `path`, atomically: the image goes to a temporary
-/// file in the same directory which is then renamed over `path`.
+/// Linear light of `film` (working values decoded with `assumed_gamma`, negatives
+/// 0, no upper clamp), RGB interleaved, rows from the top: what EXR and HDR hold.
+pub fn linear_samples(film: &Film, opts: &OutputOptions) -> Vec<f32> {
+    film.pixels
+        .iter()
+        .flat_map(|c| c.to_array())
+        .map(|v| {
+            let l = decode_working(v, opts.assumed_gamma);
+            if l.is_finite() {
+                l as f32
+            } else {
+                0.0
+            }
+        })
+        .collect()
+}
+
+/// Writes `film` at `path` in the format its extension names (PNG when the
+/// extension is not one of [`Format`]'s), atomically: the image goes to a
+/// temporary file in the same directory which is then renamed over `path`.
 pub fn write(film: &Film, path: &Path, opts: &OutputOptions) -> Result<(), OutputError> {
+    let format = Format::from_path(path).unwrap_or(Format::Png);
+    write_as(film, path, format, opts)
+}
+
+/// Writes `film` at `path` as `format`, atomically. PNG and PPM hold
+/// gamma-encoded 8- or 16-bit values (`opts.bit_depth`, `opts.gamma`); EXR (32-bit
+/// float) and Radiance HDR hold linear light, unclamped, and ignore `gamma` and
+/// `bit_depth`.
+pub fn write_as(
+    film: &Film,
+    path: &Path,
+    format: Format,
+    opts: &OutputOptions,
+) -> Result<(), OutputError> {
     let err = |e: Box<dyn std::error::Error + Send + Sync>| OutputError {
         path: path.to_path_buf(),
         source: e,
     };
+    if film.width == 0 || film.height == 0 {
+        return Err(err("the image is empty".into()));
+    }
+    let tmp = temp_path(path);
+    let result = (|| -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
+        let file = File::create(&tmp)?;
+        let mut out = BufWriter::new(file);
+        match format {
+            Format::Png | Format::Ppm => {
+                let (bytes, colour) = integer_samples(film, opts);
+                if format == Format::Png {
+                    PngEncoder::new(&mut out).write_image(
+                        &bytes,
+                        film.width,
+                        film.height,
+                        colour,
+                    )?;
+                } else {
+                    PnmEncoder::new(&mut out)
+                        .with_subtype(PnmSubtype::Pixmap(SampleEncoding::Binary))
+                        .write_image(&bytes, film.width, film.height, colour)?;
+                }
+            }
+            Format::Exr => {
+                let floats = linear_samples(film, opts);
+                let bytes: Vec<u8> = floats.iter().flat_map(|v| v.to_ne_bytes()).collect();
+                OpenExrEncoder::new(&mut out).write_image(
+                    &bytes,
+                    film.width,
+                    film.height,
+                    ExtendedColorType::Rgb32F,
+                )?;
+            }
+            Format::Hdr => {
+                let floats = linear_samples(film, opts);
+                let px: Vec<image::Rgb<f32>> = floats
+                    .chunks_exact(3)
+                    .map(|c| image::Rgb([c[0], c[1], c[2]]))
+                    .collect();
+                HdrEncoder::new(&mut out).encode(&px, film.width as usize, film.height as usize)?;
+            }
+        }
+        out.flush()?;
+        out.get_ref().sync_all()?;
+        drop(out);
+        std::fs::rename(&tmp, path)?;
+        Ok(())
+    })();
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result.map_err(err)
+}
+
+/// The 8- or 16-bit file samples (native-endian bytes for 16) and their layout.
+fn integer_samples(film: &Film, opts: &OutputOptions) -> (Vec<u8>, ExtendedColorType) {
     let samples = encode_samples(film, opts);
-    let (bytes, colour) = match opts.bit_depth {
+    match opts.bit_depth {
         BitDepth::Eight => (
             samples
                 .iter()
@@ -92,22 +185,7 @@ pub fn write(film: &Film, path: &Path, opts: &OutputOptions) -> Result<(), Outpu
                 .collect(),
             ExtendedColorType::Rgb16,
         ),
-    };
-    let tmp = temp_path(path);
-    let result = (|| -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
-        let file = File::create(&tmp)?;
-        let mut out = BufWriter::new(file);
-        PngEncoder::new(&mut out).write_image(&bytes, film.width, film.height, colour)?;
-        out.flush()?;
-        out.get_ref().sync_all()?;
-        drop(out);
-        std::fs::rename(&tmp, path)?;
-        Ok(())
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
     }
-    result.map_err(err)
 }
 
 /// `dir/.name.tmp-PID` next to `path`.

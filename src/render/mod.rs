@@ -1,19 +1,26 @@
 //! Rendering a [`World`] into a [`Film`] of working-space colours.
 //!
-//! Every pixel is computed independently from one ray through its centre, so the
-//! result does not depend on the number of threads.
+//! Every sample is a function of (pixel, sample index, frame, seed) only, and ray
+//! counters are summed per row, so the picture and the statistics do not depend on
+//! the number of threads. [`render`] takes one ray per pixel centre; [`render_with`]
+//! adds anti-aliasing, fixed sampling, a crop region, debug passes, statistics and
+//! progress.
 
+mod aa;
 mod camera;
 mod film;
 mod lights;
+mod passes;
 mod pigment;
 mod sampler;
 mod shade;
 mod stats;
 
+pub use aa::{Antialias, Sampling};
 pub use camera::primary_ray;
 pub use film::Film;
 pub use lights::{incident, Incident};
+pub use passes::Pass;
 pub use pigment::{checker_index, evaluate as evaluate_pigment, CHECKER_OFFSET};
 pub use sampler::Sampler;
 pub use shade::{metallic_tint, metallic_weight, reflection_amount, trace, TraceCtx};
@@ -22,6 +29,7 @@ pub use stats::RayStats;
 use crate::build::{RayKind, World};
 use glam::DVec3;
 use rayon::prelude::*;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 /// What to render.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -42,39 +50,368 @@ impl Default for RenderOptions {
     }
 }
 
-/// Renders `world` with rayon, one row per task.
-pub fn render(world: &World, opts: &RenderOptions) -> Film {
-    let (w, h) = (opts.width, opts.height);
-    let mut pixels = vec![DVec3::ZERO; w as usize * h as usize];
-    if w > 0 {
-        pixels
-            .par_chunks_mut(w as usize)
-            .enumerate()
-            .for_each(|(j, row)| {
-                for (i, px) in row.iter_mut().enumerate() {
-                    *px = render_pixel(world, i as u32, j as u32, w, h);
-                }
-            });
-    }
-    Film {
-        width: w,
-        height: h,
-        pixels,
+/// A rectangle of pixels: columns `x0..x1` and rows `y0..y1` (ends excluded),
+/// `(0, 0)` at the top-left of the full image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Crop {
+    /// First column.
+    pub x0: u32,
+    /// First row.
+    pub y0: u32,
+    /// One past the last column.
+    pub x1: u32,
+    /// One past the last row.
+    pub y1: u32,
+}
+
+/// How to render, beyond the image size; the default is one ray per pixel centre,
+/// the whole image, the shaded picture.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Settings {
+    /// Rays per pixel.
+    pub sampling: Sampling,
+    /// Render only this region (clamped to the image); the film then has the
+    /// region's size, and every pixel in it is the same as in a full render.
+    pub crop: Option<Crop>,
+    /// Which picture to make.
+    pub pass: Pass,
+    /// Seed of every random number ([`Sampler`]).
+    pub seed: u64,
+    /// Animation frame number (also keys the [`Sampler`]).
+    pub frame: u32,
+}
+
+/// Work done, to watch a render from another thread: `done` of `total` units
+/// (rows; an anti-aliased render counts each row twice).
+#[derive(Debug, Default)]
+pub struct Progress {
+    /// Units finished.
+    pub done: AtomicU64,
+    /// Units in the whole render, set when it starts.
+    pub total: AtomicU64,
+}
+
+/// Counts from one render; the same for any number of threads.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RenderStats {
+    /// Rays by kind.
+    pub rays: RayStats,
+    /// Pixels rendered.
+    pub pixels: u64,
+    /// Camera samples taken (rays through the image plane, whether or not the
+    /// camera made a ray).
+    pub samples: u64,
+    /// Pixels adaptive anti-aliasing supersampled.
+    pub supersampled: u64,
+}
+
+impl std::ops::AddAssign for RenderStats {
+    fn add_assign(&mut self, o: RenderStats) {
+        self.rays += o.rays;
+        self.pixels += o.pixels;
+        self.samples += o.samples;
+        self.supersampled += o.supersampled;
     }
 }
 
-/// The working-space colour of pixel (`i`, `j`), `j = 0` at the top.
+/// A film and what it took.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Rendered {
+    /// The picture (the crop region's size when cropped).
+    pub film: Film,
+    /// Counts.
+    pub stats: RenderStats,
+}
+
+/// Renders `world` with one ray through each pixel centre, with rayon, one row per
+/// task.
+pub fn render(world: &World, opts: &RenderOptions) -> Film {
+    render_with(world, opts, &Settings::default(), None).film
+}
+
+/// Renders `world` as `settings` say. `progress`, when given, is updated as rows
+/// finish.
+pub fn render_with(
+    world: &World,
+    opts: &RenderOptions,
+    settings: &Settings,
+    progress: Option<&Progress>,
+) -> Rendered {
+    let (w, h) = (opts.width, opts.height);
+    let crop = settings.crop.map_or(
+        Crop {
+            x0: 0,
+            y0: 0,
+            x1: w,
+            y1: h,
+        },
+        |c| Crop {
+            x0: c.x0.min(w),
+            y0: c.y0.min(h),
+            x1: c.x1.min(w).max(c.x0.min(w)),
+            y1: c.y1.min(h).max(c.y0.min(h)),
+        },
+    );
+    let (cw, ch) = (crop.x1 - crop.x0, crop.y1 - crop.y0);
+    let sampling = match settings.sampling {
+        // A camera with focal blur takes its blur samples as a fixed count per
+        // pixel, like POV-Ray (lights/cameras track: `blur_samples`).
+        Sampling::Centre if dof_samples(world) > 1 => Sampling::Fixed(dof_samples(world)),
+        s => s,
+    };
+    let r = Renderer {
+        world,
+        w,
+        h,
+        settings,
+        max_depth: 0.0,
+    };
+    let max_depth = match settings.pass {
+        Pass::Depth { max: Some(m) } => m,
+        Pass::Depth { max: None } => r.farthest_hit(&crop),
+        _ => 0.0,
+    };
+    let r = Renderer { max_depth, ..r };
+    let adaptive = matches!(sampling, Sampling::Adaptive(_));
+    if let Some(p) = progress {
+        let units = u64::from(ch) * if adaptive { 2 } else { 1 };
+        p.total.store(units, Ordering::Relaxed);
+        p.done.store(0, Ordering::Relaxed);
+    }
+    let tick = || {
+        if let Some(p) = progress {
+            p.done.fetch_add(1, Ordering::Relaxed);
+        }
+    };
+    let mut pixels = vec![DVec3::ZERO; cw as usize * ch as usize];
+    let mut stats = RenderStats::default();
+    if cw == 0 || ch == 0 {
+        return Rendered {
+            film: Film {
+                width: cw,
+                height: ch,
+                pixels,
+            },
+            stats,
+        };
+    }
+    let row_stats: Vec<RenderStats> = match sampling {
+        Sampling::Centre | Sampling::Fixed(_) => {
+            let n = match sampling {
+                Sampling::Fixed(n) => n.max(1),
+                _ => 0,
+            };
+            pixels
+                .par_chunks_mut(cw as usize)
+                .enumerate()
+                .map(|(j, row)| {
+                    let y = crop.y0 + j as u32;
+                    let mut st = RenderStats::default();
+                    for (i, px) in row.iter_mut().enumerate() {
+                        let x = crop.x0 + i as u32;
+                        *px = if n == 0 {
+                            r.centre(x, y, &mut st)
+                        } else {
+                            r.fixed(x, y, n, &mut st)
+                        };
+                        st.pixels += 1;
+                    }
+                    tick();
+                    st
+                })
+                .collect()
+        }
+        Sampling::Adaptive(aa) => {
+            // Centre samples of the region and a one-pixel border (inside the
+            // image), so a cropped pixel compares with the same neighbours as in a
+            // full render.
+            let bx0 = crop.x0.saturating_sub(1);
+            let by0 = crop.y0.saturating_sub(1);
+            let bx1 = (crop.x1 + 1).min(w);
+            let by1 = (crop.y1 + 1).min(h);
+            let bw = (bx1 - bx0) as usize;
+            let mut centres = vec![DVec3::ZERO; bw * (by1 - by0) as usize];
+            let mut stats_a: Vec<RenderStats> = centres
+                .par_chunks_mut(bw)
+                .enumerate()
+                .map(|(j, row)| {
+                    let y = by0 + j as u32;
+                    let mut st = RenderStats::default();
+                    for (i, px) in row.iter_mut().enumerate() {
+                        *px = r.centre(bx0 + i as u32, y, &mut st);
+                    }
+                    if (crop.y0..crop.y1).contains(&y) {
+                        tick();
+                    }
+                    st
+                })
+                .collect();
+            let centre_at = |x: u32, y: u32| centres[(y - by0) as usize * bw + (x - bx0) as usize];
+            let stats_b: Vec<RenderStats> = pixels
+                .par_chunks_mut(cw as usize)
+                .enumerate()
+                .map(|(j, row)| {
+                    let y = crop.y0 + j as u32;
+                    let mut st = RenderStats::default();
+                    for (i, px) in row.iter_mut().enumerate() {
+                        let x = crop.x0 + i as u32;
+                        let c = centre_at(x, y);
+                        let mut neighbours = [None; 4];
+                        if x > 0 {
+                            neighbours[0] = Some(centre_at(x - 1, y));
+                        }
+                        if y > 0 {
+                            neighbours[1] = Some(centre_at(x, y - 1));
+                        }
+                        if x + 1 < w {
+                            neighbours[2] = Some(centre_at(x + 1, y));
+                        }
+                        if y + 1 < h {
+                            neighbours[3] = Some(centre_at(x, y + 1));
+                        }
+                        let edge = aa.threshold <= 0.0
+                            || neighbours.iter().flatten().any(|&n| aa.differ(c, n));
+                        *px = if edge {
+                            st.supersampled += 1;
+                            r.supersample(x, y, c, &aa, &mut st)
+                        } else {
+                            c
+                        };
+                        st.pixels += 1;
+                    }
+                    tick();
+                    st
+                })
+                .collect();
+            stats_a.extend(stats_b);
+            stats_a
+        }
+    };
+    for s in row_stats {
+        stats += s;
+    }
+    Rendered {
+        film: Film {
+            width: cw,
+            height: ch,
+            pixels,
+        },
+        stats,
+    }
+}
+
+/// Samples per pixel the camera's focal blur asks for (1: none). When the camera
+/// gains `blur_samples` and `aperture`, this becomes
+/// `if c.aperture > 0.0 { c.blur_samples.max(1) } else { 1 }`.
+fn dof_samples(world: &World) -> u32 {
+    let _ = &world.camera;
+    1
+}
+
+/// What every sample of one render shares.
+struct Renderer<'a> {
+    world: &'a World,
+    w: u32,
+    h: u32,
+    settings: &'a Settings,
+    /// Black distance of the depth pass.
+    max_depth: f64,
+}
+
+impl Renderer<'_> {
+    /// The value at image point (`x`, `y`) (continuous pixel units) using
+    /// `sampler` for anything the camera needs.
+    fn sample_at(&self, x: f64, y: f64, sampler: &mut Sampler, st: &mut RenderStats) -> DVec3 {
+        st.samples += 1;
+        let world = self.world;
+        let Some(ray) = primary_ray(&world.camera, x, y, self.w, self.h, sampler) else {
+            return DVec3::ZERO;
+        };
+        st.rays.camera += 1;
+        if self.settings.pass != Pass::Beauty {
+            return passes::sample(world, &ray, self.settings.pass, self.max_depth);
+        }
+        let mut ctx = TraceCtx {
+            sampler,
+            stats: &mut st.rays,
+        };
+        trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0, &mut ctx)
+    }
+
+    fn sampler(&self, x: u32, y: u32, index: u32) -> Sampler {
+        Sampler::new(self.settings.seed, self.settings.frame, x, y, index)
+    }
+
+    /// The ray through the centre of pixel (`x`, `y`): sample 0.
+    fn centre(&self, x: u32, y: u32, st: &mut RenderStats) -> DVec3 {
+        let mut s = self.sampler(x, y, 0);
+        self.sample_at(f64::from(x) + 0.5, f64::from(y) + 0.5, &mut s, st)
+    }
+
+    /// Mean of `n` stratified samples of pixel (`x`, `y`).
+    fn fixed(&self, x: u32, y: u32, n: u32, st: &mut RenderStats) -> DVec3 {
+        let mut sum = DVec3::ZERO;
+        for k in 0..n {
+            let mut s = self.sampler(x, y, k);
+            let (u, v) = s.next_2d();
+            sum += self.sample_at(f64::from(x) + u, f64::from(y) + v, &mut s, st);
+        }
+        sum / f64::from(n)
+    }
+
+    /// POV-Ray's supersampled pixel: mean of the centre colour `centre` and the
+    /// `depth²` jittered grid samples (sample indices 1 to `depth²`).
+    fn supersample(
+        &self,
+        x: u32,
+        y: u32,
+        centre: DVec3,
+        aa: &Antialias,
+        st: &mut RenderStats,
+    ) -> DVec3 {
+        let n = aa.depth.max(1);
+        let mut sum = centre;
+        for k in 0..n * n {
+            let mut s = self.sampler(x, y, k + 1);
+            let (dx, dy) = aa.grid_offset(k, s.next_2d());
+            sum += self.sample_at(f64::from(x) + dx, f64::from(y) + dy, &mut s, st);
+        }
+        sum / f64::from(n * n + 1)
+    }
+
+    /// The farthest first hit of the pixel-centre rays in `crop` (0 if none).
+    fn farthest_hit(&self, crop: &Crop) -> f64 {
+        (crop.y0..crop.y1)
+            .into_par_iter()
+            .map(|y| {
+                let mut far: f64 = 0.0;
+                for x in crop.x0..crop.x1 {
+                    let mut s = self.sampler(x, y, 0);
+                    let (px, py) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
+                    if let Some(ray) =
+                        primary_ray(&self.world.camera, px, py, self.w, self.h, &mut s)
+                    {
+                        if let Some(t) = passes::first_hit_distance(self.world, &ray) {
+                            far = far.max(t);
+                        }
+                    }
+                }
+                far
+            })
+            .reduce(|| 0.0, f64::max)
+    }
+}
+
+/// The working-space colour of pixel (`i`, `j`), `j = 0` at the top, from one ray
+/// through its centre.
 pub fn render_pixel(world: &World, i: u32, j: u32, width: u32, height: u32) -> DVec3 {
-    let mut sampler = Sampler::new(0, 0, i, j, 0);
-    let mut stats = RayStats::default();
-    let mut ctx = TraceCtx {
-        sampler: &mut sampler,
-        stats: &mut stats,
+    let settings = Settings::default();
+    let r = Renderer {
+        world,
+        w: width,
+        h: height,
+        settings: &settings,
+        max_depth: 0.0,
     };
-    let (x, y) = (f64::from(i) + 0.5, f64::from(j) + 0.5);
-    let Some(ray) = primary_ray(&world.camera, x, y, width, height, ctx.sampler) else {
-        return DVec3::ZERO;
-    };
-    ctx.stats.camera += 1;
-    trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0, &mut ctx)
+    r.centre(i, j, &mut RenderStats::default())
 }
