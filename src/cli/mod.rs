@@ -3,6 +3,7 @@
 mod check;
 mod common;
 mod render;
+mod stats;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;

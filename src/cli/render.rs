@@ -1,13 +1,30 @@
-//! `rts render SCENE [-o OUT] [-W W] [-H H] [--gamma G] [--bit-depth 8|16] [--threads N]`.
+//! `rts render SCENE [-o OUT] [options]`: see docs/cli.md for every option.
 
-use super::{common, SceneArgs, EXIT_ERRORS, EXIT_OK, EXIT_USAGE};
-use rts::output::{BitDepth, Gamma, OutputOptions};
-use rts::render::RenderOptions;
+use super::{common, stats, SceneArgs, EXIT_ERRORS, EXIT_OK, EXIT_USAGE};
+use rts::output::{BitDepth, Format, Gamma, OutputOptions};
+use rts::render::{Antialias, Crop, Pass, Progress, RenderOptions, Sampling, Settings};
 use std::path::PathBuf;
 use std::time::Instant;
 
 /// Most pixels in one image (8192 × 8192).
 const MAX_PIXELS: u64 = 1 << 26;
+
+/// Most samples per pixel for `--samples`.
+const MAX_SAMPLES: u32 = 1 << 16;
+
+/// `--pass` names.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum PassName {
+    /// The shaded picture.
+    #[default]
+    Beauty,
+    /// Distance to the first hit as grey (white near, black at --depth-max).
+    Depth,
+    /// Surface normal as colour (n * 0.5 + 0.5).
+    Normal,
+    /// Pigment colour before lighting.
+    Albedo,
+}
 
 /// Arguments of `rts render`.
 #[derive(Debug, clap::Args)]
@@ -15,9 +32,13 @@ pub struct RenderArgs {
     /// The scene file.
     #[arg(value_name = "SCENE")]
     pub scene_file: PathBuf,
-    /// Output image (PNG); defaults to the scene's name with `.png` in the current folder.
+    /// Output image; its extension (.png, .ppm, .exr, .hdr) picks the format unless
+    /// --format is given. Defaults to the scene's name in the current folder.
     #[arg(short = 'o', long = "output", value_name = "OUT")]
     pub output: Option<PathBuf>,
+    /// Output format: png, ppm, exr or hdr (overrides the extension).
+    #[arg(long, value_name = "FORMAT")]
+    pub format: Option<Format>,
     /// Image width in pixels.
     #[arg(short = 'W', long = "width", default_value_t = 800)]
     pub width: u32,
@@ -27,13 +48,48 @@ pub struct RenderArgs {
     /// The file's gamma: `srgb` (POV-Ray 3.7's default) or a number (`1.0` writes linear values).
     #[arg(long, value_name = "srgb|G", default_value = "srgb")]
     pub gamma: Gamma,
-    /// Bits per channel in the PNG.
+    /// Bits per channel in PNG and PPM files.
     #[arg(long, value_name = "8|16", default_value_t = 8, value_parser = clap::value_parser!(u8).range(8..=16))]
     pub bit_depth: u8,
+    /// Adaptive anti-aliasing like POV-Ray's +A (method 1): supersample pixels whose
+    /// colour differs from a neighbour's by at least THRESHOLD (POV-Ray's default 0.3).
+    #[arg(long, value_name = "THRESHOLD")]
+    pub antialias: Option<f64>,
+    /// Anti-aliasing grid per side, 1 to 9 (POV-Ray's +R; 3 takes 3×3 more rays).
+    #[arg(long, value_name = "N", default_value_t = 3)]
+    pub aa_depth: u32,
+    /// Anti-aliasing jitter, 0 (regular grid) to 1 (POV-Ray's +J, on with 1.0 by default).
+    #[arg(long, value_name = "AMOUNT", default_value_t = 1.0)]
+    pub jitter: f64,
+    /// Gamma applied to colours before the anti-aliasing comparison (POV-Ray's Antialias_Gamma).
+    #[arg(long, value_name = "G", default_value_t = 2.5)]
+    pub aa_gamma: f64,
+    /// Take N stratified samples in every pixel and average them (instead of --antialias).
+    #[arg(long, value_name = "N")]
+    pub samples: Option<u32>,
+    /// Seed of every random number (jitter, sample positions).
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    pub seed: u64,
+    /// Animation frame number (keys the random numbers with the seed).
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    pub frame: u32,
+    /// Render only the pixels X0..X1 × Y0..Y1 (0-based, ends excluded, top-left
+    /// origin); the output image has the region's size.
+    #[arg(long, value_name = "X0,Y0,X1,Y1")]
+    pub crop: Option<String>,
+    /// Write a debug pass instead of the shaded picture.
+    #[arg(long, value_enum, default_value_t = PassName::Beauty)]
+    pub pass: PassName,
+    /// Distance drawn black in --pass depth (default: the farthest hit).
+    #[arg(long, value_name = "D")]
+    pub depth_max: Option<f64>,
     /// Number of threads (default: all cores). The image is the same for any number.
     #[arg(long, value_name = "N")]
     pub threads: Option<usize>,
-    /// Print nothing but diagnostics.
+    /// Write the statistics as JSON to FILE (`-` for stdout).
+    #[arg(long, value_name = "FILE")]
+    pub stats_json: Option<PathBuf>,
+    /// Print no progress bar and no statistics, only diagnostics.
     #[arg(short, long)]
     pub quiet: bool,
     /// Options for reading the scene.
@@ -41,8 +97,126 @@ pub struct RenderArgs {
     pub scene: SceneArgs,
 }
 
+/// Why the options cannot be used.
+fn usage(msg: impl std::fmt::Display) -> i32 {
+    eprintln!("error: {msg}");
+    EXIT_USAGE
+}
+
+/// `X0,Y0,X1,Y1` checked against a `w`×`h` image.
+fn parse_crop(s: &str, w: u32, h: u32) -> Result<Crop, String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    let nums: Result<Vec<u32>, _> = parts.iter().map(|p| p.parse::<u32>()).collect();
+    match nums.as_deref() {
+        Ok([x0, y0, x1, y1]) => {
+            if x0 >= x1 || y0 >= y1 || *x1 > w || *y1 > h {
+                Err(format!(
+                    "--crop {s}: the region must satisfy X0 < X1 <= {w} and Y0 < Y1 <= {h} (ends are excluded)"
+                ))
+            } else {
+                Ok(Crop {
+                    x0: *x0,
+                    y0: *y0,
+                    x1: *x1,
+                    y1: *y1,
+                })
+            }
+        }
+        _ => Err(format!(
+            "--crop {s}: expected four whole numbers X0,Y0,X1,Y1 such as 0,0,160,120"
+        )),
+    }
+}
+
+/// The render settings from the options, or a usage message.
+fn settings(args: &RenderArgs) -> Result<Settings, String> {
+    let sampling = match (args.antialias, args.samples) {
+        (Some(_), Some(_)) => {
+            return Err("--antialias and --samples cannot be used together: choose one".into())
+        }
+        (Some(t), None) => {
+            if !(t.is_finite() && t >= 0.0) {
+                return Err(format!(
+                    "--antialias {t}: the threshold must be 0 or more (POV-Ray's default is 0.3)"
+                ));
+            }
+            if !(1..=9).contains(&args.aa_depth) {
+                return Err(format!("--aa-depth {}: must be 1 to 9", args.aa_depth));
+            }
+            if !(0.0..=1.0).contains(&args.jitter) {
+                return Err(format!("--jitter {}: must be 0 to 1", args.jitter));
+            }
+            if !(args.aa_gamma.is_finite() && args.aa_gamma > 0.0) {
+                return Err(format!("--aa-gamma {}: must be positive", args.aa_gamma));
+            }
+            Sampling::Adaptive(Antialias {
+                threshold: t,
+                depth: args.aa_depth,
+                jitter: args.jitter,
+                gamma: args.aa_gamma,
+            })
+        }
+        (None, Some(n)) => {
+            if n == 0 || n > MAX_SAMPLES {
+                return Err(format!("--samples {n}: must be 1 to {MAX_SAMPLES}"));
+            }
+            Sampling::Fixed(n)
+        }
+        (None, None) => Sampling::Centre,
+    };
+    let crop = match &args.crop {
+        Some(c) => Some(parse_crop(c, args.width, args.height)?),
+        None => None,
+    };
+    if let Some(d) = args.depth_max {
+        if !(d.is_finite() && d > 0.0) {
+            return Err(format!("--depth-max {d}: must be a positive distance"));
+        }
+    }
+    let pass = match args.pass {
+        PassName::Beauty => Pass::Beauty,
+        PassName::Depth => Pass::Depth {
+            max: args.depth_max,
+        },
+        PassName::Normal => Pass::Normal,
+        PassName::Albedo => Pass::Albedo,
+    };
+    Ok(Settings {
+        sampling,
+        crop,
+        pass,
+        seed: args.seed,
+        frame: args.frame,
+    })
+}
+
+/// The output path and format from `-o` and `--format`.
+fn output_target(args: &RenderArgs) -> Result<(PathBuf, Format), String> {
+    match (&args.output, args.format) {
+        (Some(p), Some(f)) => Ok((p.clone(), f)),
+        (Some(p), None) => match Format::from_path(p) {
+            Some(f) => Ok((p.clone(), f)),
+            None => Err(format!(
+                "cannot write `{}`: {} is not a supported format; use .png, .ppm, .exr or .hdr, or say --format",
+                p.display(),
+                p.extension()
+                    .map_or("no extension".to_string(), |e| format!(".{}", e.to_string_lossy()))
+            )),
+        },
+        (None, f) => {
+            let f = f.unwrap_or(Format::Png);
+            let stem = args
+                .scene_file
+                .file_stem()
+                .map_or("render".into(), |s| s.to_string_lossy().into_owned());
+            Ok((PathBuf::from(format!("{stem}.{}", f.extension())), f))
+        }
+    }
+}
+
 /// Renders the scene.
 pub fn run(args: &RenderArgs) -> i32 {
+    let t_start = Instant::now();
     if args.width == 0
         || args.height == 0
         || u64::from(args.width) * u64::from(args.height) > MAX_PIXELS
@@ -56,38 +230,19 @@ pub fn run(args: &RenderArgs) -> i32 {
         return EXIT_USAGE;
     }
     if args.bit_depth != 8 && args.bit_depth != 16 {
-        eprintln!("error: --bit-depth must be 8 or 16");
-        return EXIT_USAGE;
+        return usage("--bit-depth must be 8 or 16");
     }
-    let output = args.output.clone().unwrap_or_else(|| {
-        let stem = args
-            .scene_file
-            .file_stem()
-            .map_or("render".into(), |s| s.to_string_lossy().into_owned());
-        PathBuf::from(format!("{stem}.png"))
-    });
-    match output
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase)
-        .as_deref()
-    {
-        Some("png") => {}
-        other => {
-            eprintln!(
-                "error: cannot write `{}`: {} is not a supported format (this release writes .png)",
-                output.display(),
-                other.map_or("no extension".to_string(), |e| format!(".{e}"))
-            );
-            return EXIT_USAGE;
-        }
-    }
+    let (output, format) = match output_target(args) {
+        Ok(t) => t,
+        Err(e) => return usage(e),
+    };
+    let settings = match settings(args) {
+        Ok(s) => s,
+        Err(e) => return usage(e),
+    };
     let options = match common::eval_options(&args.scene, args.width, args.height) {
         Ok(o) => o,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return EXIT_USAGE;
-        }
+        Err(e) => return usage(e),
     };
     let t0 = Instant::now();
     let loaded = match common::load(&args.scene_file, &options) {
@@ -106,21 +261,39 @@ pub fn run(args: &RenderArgs) -> i32 {
         return EXIT_ERRORS;
     };
     let t_parse = t0.elapsed();
+    let progress = Progress::default();
+    let show_progress = !args.quiet && stats::stderr_is_terminal();
     let job = || {
         let t1 = Instant::now();
         let world = rts::build::build(&scene);
         let t_build = t1.elapsed();
         let t2 = Instant::now();
-        let film = rts::render::render(
-            &world,
-            &RenderOptions {
-                width: args.width,
-                height: args.height,
-            },
-        );
-        (film, t_build, t2.elapsed(), world.global.assumed_gamma)
+        let done = std::sync::atomic::AtomicBool::new(false);
+        let rendered = std::thread::scope(|s| {
+            if show_progress {
+                s.spawn(|| stats::progress_bar(&progress, &done));
+            }
+            let r = rts::render::render_with(
+                &world,
+                &RenderOptions {
+                    width: args.width,
+                    height: args.height,
+                },
+                &settings,
+                Some(&progress),
+            );
+            done.store(true, std::sync::atomic::Ordering::Relaxed);
+            r
+        });
+        (
+            rendered,
+            t_build,
+            t2.elapsed(),
+            world.global.assumed_gamma,
+            rayon::current_num_threads(),
+        )
     };
-    let (film, t_build, t_trace, assumed_gamma) = match args.threads {
+    let (rendered, t_build, t_render, assumed_gamma, threads) = match args.threads {
         Some(n) => match rayon::ThreadPoolBuilder::new()
             .num_threads(n.max(1))
             .build()
@@ -133,31 +306,55 @@ pub fn run(args: &RenderArgs) -> i32 {
         },
         None => job(),
     };
+    let data = settings.pass.is_data();
     let out = OutputOptions {
-        gamma: args.gamma,
+        gamma: if data { Gamma::Power(1.0) } else { args.gamma },
         bit_depth: if args.bit_depth == 16 {
             BitDepth::Sixteen
         } else {
             BitDepth::Eight
         },
-        assumed_gamma,
+        assumed_gamma: if data { None } else { assumed_gamma },
     };
-    if let Err(e) = rts::output::write(&film, &output, &out) {
+    let t3 = Instant::now();
+    if let Err(e) = rts::output::write_as(&rendered.film, &output, format, &out) {
         eprintln!("error: {e}");
         return EXIT_ERRORS;
     }
+    let report = stats::Report {
+        output: &output,
+        format,
+        width: args.width,
+        height: args.height,
+        settings: &settings,
+        threads,
+        objects: scene.objects.len(),
+        lights: scene.lights.len(),
+        stats: rendered.stats,
+        times: stats::Times {
+            parse_eval: t_parse,
+            build: t_build,
+            render: t_render,
+            write: t3.elapsed(),
+            total: t_start.elapsed(),
+        },
+        peak_memory: stats::peak_memory_bytes(),
+    };
     if !args.quiet {
-        eprintln!(
-            "rendered {}x{} → {} (parse+eval {:.3}s, build {:.3}s, trace {:.3}s; {} objects, {} lights)",
-            args.width,
-            args.height,
-            output.display(),
-            t_parse.as_secs_f64(),
-            t_build.as_secs_f64(),
-            t_trace.as_secs_f64(),
-            scene.objects.len(),
-            scene.lights.len()
-        );
+        eprint!("{}", report.human());
+    }
+    if let Some(path) = &args.stats_json {
+        let text = report.json().to_string();
+        let written = if path.as_os_str() == "-" {
+            println!("{text}");
+            Ok(())
+        } else {
+            std::fs::write(path, text + "\n")
+        };
+        if let Err(e) = written {
+            eprintln!("error: cannot write statistics `{}`: {e}", path.display());
+            return EXIT_ERRORS;
+        }
     }
     EXIT_OK
 }

@@ -6,10 +6,15 @@ use glam::DVec3;
 /// POV-Ray 3.7's non-recursive adaptive anti-aliasing (`Sampling_Method=1`,
 /// `+A0.3 +R3 +J1.0`), measured against `povray`:
 ///
-/// * every pixel first gets one ray through its centre;
-/// * a pixel is supersampled when its centre colour differs from that of a
-///   neighbour (left, above, right or below: a difference found between two
-///   pixels supersamples both) by at least `threshold`, the difference being
+/// * the image is cut into blocks of [`BLOCK`]×[`BLOCK`] pixels from the top-left
+///   (POV-Ray's `Render_Block_Size`), each done on its own;
+/// * every pixel of a block, and the row above and the column left of the block,
+///   first gets one ray through its centre;
+/// * then, in reading order, each pixel is compared with its left and upper
+///   neighbours as they are *now* (a neighbour inside the block may already be
+///   supersampled; one outside keeps its centre colour); when they differ by at
+///   least `threshold`, the pixel is supersampled, and so is the neighbour if it
+///   is in the block and was not yet. The difference is
 ///   `|r1-r2| + |g1-g2| + |b1-b2|` of the colours clipped to [0, 1] and raised to
 ///   `1/gamma` (POV-Ray's `Antialias_Gamma`, 2.5);
 /// * a supersampled pixel takes `depth × depth` more rays on a regular grid of
@@ -59,6 +64,139 @@ impl Antialias {
             (col + 0.5 + self.jitter * (u - 0.5)) / n,
             (row + 0.5 + self.jitter * (v - 0.5)) / n,
         )
+    }
+}
+
+/// POV-Ray's render block size, which anti-aliasing depends on.
+pub const BLOCK: u32 = 32;
+
+/// A block of pixels: columns `x0..x1`, rows `y0..y1`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Block {
+    /// First column.
+    pub x0: u32,
+    /// First row.
+    pub y0: u32,
+    /// One past the last column.
+    pub x1: u32,
+    /// One past the last row.
+    pub y1: u32,
+}
+
+/// The blocks of a `width`×`height` image that meet `crop`, in reading order.
+/// Blocks are whole blocks of the full image (cut only by its edges), so a
+/// cropped render matches a full one pixel for pixel.
+pub fn blocks(crop: &super::Crop, width: u32, height: u32) -> Vec<Block> {
+    let mut out = Vec::new();
+    if crop.x0 >= crop.x1 || crop.y0 >= crop.y1 {
+        return out;
+    }
+    let (bx0, by0) = (crop.x0 / BLOCK, crop.y0 / BLOCK);
+    let (bx1, by1) = ((crop.x1 - 1) / BLOCK, (crop.y1 - 1) / BLOCK);
+    for by in by0..=by1 {
+        for bx in bx0..=bx1 {
+            out.push(Block {
+                x0: bx * BLOCK,
+                y0: by * BLOCK,
+                x1: ((bx + 1) * BLOCK).min(width),
+                y1: ((by + 1) * BLOCK).min(height),
+            });
+        }
+    }
+    out
+}
+
+/// The colours of `block` (row-major) under adaptive anti-aliasing;
+/// `centre(x, y)` traces a pixel's centre ray, `supersample(x, y, c)` the
+/// supersampled colour of a pixel whose centre colour is `c`.
+pub fn render_block<S>(
+    block: &Block,
+    aa: &Antialias,
+    centre: impl Fn(u32, u32, &mut S) -> DVec3,
+    supersample: impl Fn(u32, u32, DVec3, &mut S) -> DVec3,
+    st: &mut S,
+) -> Vec<DVec3>
+where
+    S: SupersampleCount,
+{
+    let bw = (block.x1 - block.x0) as usize;
+    let idx = |x: u32, y: u32| (y - block.y0) as usize * bw + (x - block.x0) as usize;
+    let mut values = Vec::with_capacity(bw * (block.y1 - block.y0) as usize);
+    for y in block.y0..block.y1 {
+        for x in block.x0..block.x1 {
+            values.push(centre(x, y, st));
+        }
+    }
+    let top: Vec<DVec3> = if block.y0 > 0 {
+        (block.x0..block.x1)
+            .map(|x| centre(x, block.y0 - 1, st))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let left: Vec<DVec3> = if block.x0 > 0 {
+        (block.y0..block.y1)
+            .map(|y| centre(block.x0 - 1, y, st))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let mut done = vec![false; values.len()];
+    let centres = values.clone();
+    for y in block.y0..block.y1 {
+        for x in block.x0..block.x1 {
+            let c = centres[idx(x, y)];
+            let mut hit = false;
+            // Left neighbour, then upper neighbour.
+            let neighbours = [
+                if x > block.x0 {
+                    Some((Some(idx(x - 1, y)), values[idx(x - 1, y)]))
+                } else if x > 0 {
+                    Some((None, left[(y - block.y0) as usize]))
+                } else {
+                    None
+                },
+                if y > block.y0 {
+                    Some((Some(idx(x, y - 1)), values[idx(x, y - 1)]))
+                } else if y > 0 {
+                    Some((None, top[(x - block.x0) as usize]))
+                } else {
+                    None
+                },
+            ];
+            for (inside, v) in neighbours.into_iter().flatten() {
+                if aa.threshold <= 0.0 || aa.differ(c, v) {
+                    hit = true;
+                    if let Some(i) = inside {
+                        if !done[i] {
+                            done[i] = true;
+                            let (nx, ny) = (block.x0 + (i % bw) as u32, block.y0 + (i / bw) as u32);
+                            values[i] = supersample(nx, ny, centres[i], st);
+                            st.count_supersampled();
+                        }
+                    }
+                }
+            }
+            if (hit || aa.threshold <= 0.0) && !done[idx(x, y)] {
+                let i = idx(x, y);
+                done[i] = true;
+                values[i] = supersample(x, y, c, st);
+                st.count_supersampled();
+            }
+        }
+    }
+    values
+}
+
+/// Something that counts supersampled pixels.
+pub trait SupersampleCount {
+    /// One more pixel was supersampled.
+    fn count_supersampled(&mut self);
+}
+
+impl SupersampleCount for super::RenderStats {
+    fn count_supersampled(&mut self) {
+        self.supersampled += 1;
     }
 }
 

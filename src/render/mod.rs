@@ -82,7 +82,7 @@ pub struct Settings {
 }
 
 /// Work done, to watch a render from another thread: `done` of `total` units
-/// (rows; an anti-aliased render counts each row twice).
+/// (rows; blocks of [`aa::BLOCK`] pixels for an anti-aliased render).
 #[derive(Debug, Default)]
 pub struct Progress {
     /// Units finished.
@@ -174,7 +174,11 @@ pub fn render_with(
     let r = Renderer { max_depth, ..r };
     let adaptive = matches!(sampling, Sampling::Adaptive(_));
     if let Some(p) = progress {
-        let units = u64::from(ch) * if adaptive { 2 } else { 1 };
+        let units = if adaptive {
+            aa::blocks(&crop, w, h).len() as u64
+        } else {
+            u64::from(ch)
+        };
         p.total.store(units, Ordering::Relaxed);
         p.done.store(0, Ordering::Relaxed);
     }
@@ -222,69 +226,34 @@ pub fn render_with(
                 .collect()
         }
         Sampling::Adaptive(aa) => {
-            // Centre samples of the region and a one-pixel border (inside the
-            // image), so a cropped pixel compares with the same neighbours as in a
-            // full render.
-            let bx0 = crop.x0.saturating_sub(1);
-            let by0 = crop.y0.saturating_sub(1);
-            let bx1 = (crop.x1 + 1).min(w);
-            let by1 = (crop.y1 + 1).min(h);
-            let bw = (bx1 - bx0) as usize;
-            let mut centres = vec![DVec3::ZERO; bw * (by1 - by0) as usize];
-            let mut stats_a: Vec<RenderStats> = centres
-                .par_chunks_mut(bw)
-                .enumerate()
-                .map(|(j, row)| {
-                    let y = by0 + j as u32;
+            let blocks = aa::blocks(&crop, w, h);
+            let results: Vec<(aa::Block, Vec<DVec3>, RenderStats)> = blocks
+                .into_par_iter()
+                .map(|b| {
                     let mut st = RenderStats::default();
-                    for (i, px) in row.iter_mut().enumerate() {
-                        *px = r.centre(bx0 + i as u32, y, &mut st);
-                    }
-                    if (crop.y0..crop.y1).contains(&y) {
-                        tick();
-                    }
-                    st
-                })
-                .collect();
-            let centre_at = |x: u32, y: u32| centres[(y - by0) as usize * bw + (x - bx0) as usize];
-            let stats_b: Vec<RenderStats> = pixels
-                .par_chunks_mut(cw as usize)
-                .enumerate()
-                .map(|(j, row)| {
-                    let y = crop.y0 + j as u32;
-                    let mut st = RenderStats::default();
-                    for (i, px) in row.iter_mut().enumerate() {
-                        let x = crop.x0 + i as u32;
-                        let c = centre_at(x, y);
-                        let mut neighbours = [None; 4];
-                        if x > 0 {
-                            neighbours[0] = Some(centre_at(x - 1, y));
-                        }
-                        if y > 0 {
-                            neighbours[1] = Some(centre_at(x, y - 1));
-                        }
-                        if x + 1 < w {
-                            neighbours[2] = Some(centre_at(x + 1, y));
-                        }
-                        if y + 1 < h {
-                            neighbours[3] = Some(centre_at(x, y + 1));
-                        }
-                        let edge = aa.threshold <= 0.0
-                            || neighbours.iter().flatten().any(|&n| aa.differ(c, n));
-                        *px = if edge {
-                            st.supersampled += 1;
-                            r.supersample(x, y, c, &aa, &mut st)
-                        } else {
-                            c
-                        };
-                        st.pixels += 1;
-                    }
+                    let values = aa::render_block(
+                        &b,
+                        &aa,
+                        |x, y, st: &mut RenderStats| r.centre(x, y, st),
+                        |x, y, c, st: &mut RenderStats| r.supersample(x, y, c, &aa, st),
+                        &mut st,
+                    );
                     tick();
-                    st
+                    (b, values, st)
                 })
                 .collect();
-            stats_a.extend(stats_b);
-            stats_a
+            let mut all = Vec::with_capacity(results.len());
+            for (b, values, mut st) in results {
+                for y in b.y0.max(crop.y0)..b.y1.min(crop.y1) {
+                    for x in b.x0.max(crop.x0)..b.x1.min(crop.x1) {
+                        st.pixels += 1;
+                        let v = values[((y - b.y0) * (b.x1 - b.x0) + (x - b.x0)) as usize];
+                        pixels[((y - crop.y0) * cw + (x - crop.x0)) as usize] = v;
+                    }
+                }
+                all.push(st);
+            }
+            all
         }
     };
     for s in row_stats {
