@@ -5,8 +5,10 @@ mod render_support;
 use glam::DVec3;
 use render_support::*;
 use rts::build::build;
-use rts::output::{write, BitDepth, Gamma, OutputOptions};
-use rts::render::{render, Film, RenderOptions};
+use rts::output::{write, write_as, BitDepth, Format, Gamma, OutputOptions};
+use rts::render::{
+    render, render_with, Antialias, Crop, Film, Pass, RenderOptions, Rendered, Sampling, Settings,
+};
 use rts::scene::{Finish, Pattern, Pigment, Reflection, Scene, Texture};
 use std::sync::Arc;
 
@@ -160,4 +162,243 @@ fn write_error_names_the_path() {
     let msg = err.to_string();
     assert!(msg.contains("/nonexistent-rts-dir/sub/out.png"), "{msg}");
     assert!(std::error::Error::source(&err).is_some());
+}
+
+fn render_settings_on(threads: usize, sc: &Scene, settings: &Settings) -> Rendered {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .unwrap();
+    let world = build(sc);
+    pool.install(|| {
+        render_with(
+            &world,
+            &RenderOptions {
+                width: 96,
+                height: 72,
+            },
+            settings,
+            None,
+        )
+    })
+}
+
+fn bits(f: &Film) -> Vec<u64> {
+    f.pixels
+        .iter()
+        .flat_map(|p| p.to_array().map(f64::to_bits))
+        .collect()
+}
+
+#[test]
+fn antialias_and_samples_are_the_same_on_one_and_four_threads() {
+    let sc = busy_scene();
+    let plain = render_on(1, &sc);
+    for sampling in [
+        Sampling::Adaptive(Antialias::default()),
+        Sampling::Adaptive(Antialias {
+            threshold: 0.0,
+            depth: 2,
+            jitter: 0.0,
+            ..Antialias::default()
+        }),
+        Sampling::Fixed(5),
+    ] {
+        let settings = Settings {
+            sampling,
+            seed: 3,
+            ..Settings::default()
+        };
+        let a = render_settings_on(1, &sc, &settings);
+        let b = render_settings_on(4, &sc, &settings);
+        assert_eq!(bits(&a.film), bits(&b.film), "{sampling:?}");
+        assert_eq!(a.stats, b.stats, "{sampling:?}");
+        assert_eq!(a.stats.pixels, 96 * 72);
+        assert!(a.stats.rays.camera > 96 * 72, "{sampling:?}");
+        // Anti-aliasing changes edge pixels only; the picture stays close.
+        assert_ne!(bits(&a.film), bits(&plain), "{sampling:?}");
+    }
+    // Adaptive AA leaves pixels away from edges as the plain render has them.
+    let aa = render_settings_on(
+        2,
+        &sc,
+        &Settings {
+            sampling: Sampling::Adaptive(Antialias::default()),
+            ..Settings::default()
+        },
+    );
+    let same = aa
+        .film
+        .pixels
+        .iter()
+        .zip(&plain.pixels)
+        .filter(|(a, b)| a == b)
+        .count();
+    assert!(same > 96 * 72 / 4, "{same}");
+    assert!(aa.stats.supersampled > 0 && aa.stats.supersampled < 96 * 72);
+    // Another seed moves the jittered samples.
+    let other = render_settings_on(
+        2,
+        &sc,
+        &Settings {
+            sampling: Sampling::Adaptive(Antialias::default()),
+            seed: 99,
+            ..Settings::default()
+        },
+    );
+    assert_ne!(bits(&aa.film), bits(&other.film));
+}
+
+#[test]
+fn a_crop_is_the_same_pixels_as_the_full_render() {
+    let sc = busy_scene();
+    for sampling in [
+        Sampling::Centre,
+        Sampling::Adaptive(Antialias::default()),
+        Sampling::Fixed(3),
+    ] {
+        let full = render_settings_on(
+            2,
+            &sc,
+            &Settings {
+                sampling,
+                ..Settings::default()
+            },
+        );
+        let crop = Crop {
+            x0: 30,
+            y0: 20,
+            x1: 71,
+            y1: 55,
+        };
+        let part = render_settings_on(
+            3,
+            &sc,
+            &Settings {
+                sampling,
+                crop: Some(crop),
+                ..Settings::default()
+            },
+        );
+        assert_eq!((part.film.width, part.film.height), (41, 35));
+        assert_eq!(part.stats.pixels, 41 * 35);
+        for y in 0..35 {
+            for x in 0..41 {
+                assert_eq!(
+                    part.film.get(x, y),
+                    full.film.get(x + 30, y + 20),
+                    "{sampling:?} at ({x}, {y})"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn debug_passes_show_distance_normal_and_pigment() {
+    // A unit sphere 5 units in front of the camera on a black background.
+    let cam = rts::scene::Camera {
+        location: DVec3::new(0.0, 0.0, -5.0),
+        direction: DVec3::Z,
+        ..Default::default()
+    };
+    let mut sc = scene(
+        cam,
+        vec![with_texture(
+            sphere(DVec3::ZERO, 1.0),
+            texture(DVec3::new(0.9, 0.2, 0.1), Finish::default()),
+        )],
+    );
+    sc.background.rgb = DVec3::new(0.0, 0.0, 0.3);
+    let world = build(&sc);
+    let opts = RenderOptions {
+        width: 33,
+        height: 33,
+    };
+    let pass = |pass| {
+        render_with(
+            &world,
+            &opts,
+            &Settings {
+                pass,
+                ..Settings::default()
+            },
+            None,
+        )
+        .film
+    };
+    // The centre ray hits at distance 4: grey 1 - 4/8 with --depth-max 8.
+    let depth = pass(Pass::Depth { max: Some(8.0) });
+    assert!((depth.get(16, 16) - DVec3::splat(0.5)).abs().max_element() < 1e-9);
+    assert_eq!(depth.get(0, 0), DVec3::ZERO);
+    // Automatic black distance: the farthest hit, so the nearest point is the
+    // brightest and still below white.
+    let auto = pass(Pass::Depth { max: None });
+    let c = auto.get(16, 16).x;
+    assert!(c > 0.0 && c < 1.0 && auto.pixels.iter().all(|p| p.x <= c));
+    // The normal facing the camera is -z: colour (0.5, 0.5, 0).
+    let normal = pass(Pass::Normal);
+    assert!(
+        (normal.get(16, 16) - DVec3::new(0.5, 0.5, 0.0))
+            .abs()
+            .max_element()
+            < 1e-9
+    );
+    assert_eq!(normal.get(0, 0), DVec3::ZERO);
+    assert!(Pass::Normal.is_data() && !Pass::Albedo.is_data());
+    // Albedo: the pigment, unlit; the background where nothing is hit.
+    let albedo = pass(Pass::Albedo);
+    assert_eq!(albedo.get(16, 16), DVec3::new(0.9, 0.2, 0.1));
+    assert_eq!(albedo.get(0, 0), DVec3::new(0.0, 0.0, 0.3));
+}
+
+#[test]
+fn exr_hdr_and_ppm_read_back() {
+    let dir = tmp_dir("formats");
+    let film = grey_film();
+    // EXR: linear 32-bit float, unclamped; assumed_gamma 2.2 decodes 0.5 to 0.2176.
+    let exr = dir.join("a.exr");
+    let opts = OutputOptions {
+        assumed_gamma: Some(2.2),
+        ..OutputOptions::default()
+    };
+    write(&film, &exr, &opts).unwrap();
+    let img = image::open(&exr).unwrap().to_rgb32f();
+    assert_eq!(img.dimensions(), (2, 1));
+    assert!((img.get_pixel(0, 0).0[0] - 0.5f32.powf(2.2)).abs() < 1e-6);
+    assert!((img.get_pixel(1, 0).0[0] - 2.0f32.powf(2.2)).abs() < 1e-5);
+    assert_eq!(img.get_pixel(1, 0).0[1], 0.0);
+    // HDR: RGBE keeps about 1% precision, and values above 1.
+    let hdr = dir.join("a.hdr");
+    write(&film, &hdr, &OutputOptions::default()).unwrap();
+    let img = image::open(&hdr).unwrap().to_rgb32f();
+    let p = img.get_pixel(1, 0).0;
+    assert!(
+        (p[0] - 2.0).abs() < 0.02 && p[1] == 0.0 && (p[2] - 0.25).abs() < 0.01,
+        "{p:?}"
+    );
+    assert!((img.get_pixel(0, 0).0[0] - 0.5).abs() < 0.01);
+    // PPM: the same 8- and 16-bit values as PNG.
+    let ppm = dir.join("a.ppm");
+    write(&film, &ppm, &OutputOptions::default()).unwrap();
+    assert!(std::fs::read(&ppm).unwrap().starts_with(b"P6"));
+    let img = image::open(&ppm).unwrap().to_rgb8();
+    assert_eq!(img.get_pixel(0, 0).0, [188, 188, 188]);
+    assert_eq!(img.get_pixel(1, 0).0, [255, 0, 137]);
+    let opts16 = OutputOptions {
+        bit_depth: BitDepth::Sixteen,
+        ..OutputOptions::default()
+    };
+    // --format wins over the extension.
+    let odd = dir.join("b.img");
+    write_as(&film, &odd, Format::Ppm, &opts16).unwrap();
+    let img = image::ImageReader::with_format(
+        std::io::BufReader::new(std::fs::File::open(&odd).unwrap()),
+        image::ImageFormat::Pnm,
+    )
+    .decode()
+    .unwrap()
+    .to_rgb16();
+    assert_eq!(img.get_pixel(0, 0).0, [48192, 48192, 48192]);
+    std::fs::remove_dir_all(&dir).unwrap();
 }

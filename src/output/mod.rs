@@ -10,7 +10,6 @@ use crate::render::Film;
 use image::codecs::hdr::HdrEncoder;
 use image::codecs::openexr::OpenExrEncoder;
 use image::codecs::png::PngEncoder;
-use image::codecs::pnm::{PnmEncoder, PnmSubtype, SampleEncoding};
 use image::{ExtendedColorType, ImageEncoder};
 use std::fmt;
 use std::fs::File;
@@ -131,9 +130,7 @@ pub fn write_as(
                         colour,
                     )?;
                 } else {
-                    PnmEncoder::new(&mut out)
-                        .with_subtype(PnmSubtype::Pixmap(SampleEncoding::Binary))
-                        .write_image(&bytes, film.width, film.height, colour)?;
+                    write_ppm(&mut out, film, opts)?;
                 }
             }
             Format::Exr => {
@@ -165,6 +162,25 @@ pub fn write_as(
         let _ = std::fs::remove_file(&tmp);
     }
     result.map_err(err)
+}
+
+/// A binary PPM (P6): maximum value 255 or 65535, 16-bit samples big-endian as
+/// the format requires.
+fn write_ppm(out: &mut impl Write, film: &Film, opts: &OutputOptions) -> std::io::Result<()> {
+    let samples = encode_samples(film, opts);
+    let max = match opts.bit_depth {
+        BitDepth::Eight => 255,
+        BitDepth::Sixteen => 65535,
+    };
+    write!(out, "P6\n{} {}\n{max}\n", film.width, film.height)?;
+    let bytes: Vec<u8> = match opts.bit_depth {
+        BitDepth::Eight => samples.iter().map(|v| (v * 255.0).round() as u8).collect(),
+        BitDepth::Sixteen => samples
+            .iter()
+            .flat_map(|v| ((v * 65535.0).round() as u16).to_be_bytes())
+            .collect(),
+    };
+    out.write_all(&bytes)
 }
 
 /// The 8- or 16-bit file samples (native-endian bytes for 16) and their layout.

@@ -252,4 +252,90 @@ mod tests {
         };
         assert!(all.differ(DVec3::ONE, DVec3::ONE));
     }
+
+    #[derive(Default)]
+    struct Count(u64);
+    impl SupersampleCount for Count {
+        fn count_supersampled(&mut self) {
+            self.0 += 1;
+        }
+    }
+
+    #[test]
+    fn a_pixel_compares_with_its_upper_neighbour_as_supersampled() {
+        // One column: white, black, 0.3 grey. Black differs from white, so both
+        // are supersampled (to 0.25 here); the grey pixel then compares with 0.25,
+        // not with black, and stays one ray (POV-Ray does the same at the horizon
+        // of a checkered floor).
+        let centres = [1.0, 0.0, 0.3];
+        let block = Block {
+            x0: 0,
+            y0: 0,
+            x1: 1,
+            y1: 3,
+        };
+        let mut n = Count::default();
+        let v = render_block(
+            &block,
+            &Antialias::default(),
+            |_, y, _: &mut Count| DVec3::splat(centres[y as usize]),
+            |_, y, c, _: &mut Count| if y == 1 { DVec3::splat(0.25) } else { c * 0.9 },
+            &mut n,
+        );
+        assert_eq!(n.0, 2);
+        assert_eq!(
+            v,
+            vec![DVec3::splat(0.9), DVec3::splat(0.25), DVec3::splat(0.3)]
+        );
+    }
+
+    #[test]
+    fn block_borders_use_centre_colours_and_are_not_supersampled() {
+        // Block starting at row 32: its first row compares with the centre of row
+        // 31, which belongs to another block and is never changed here.
+        let block = Block {
+            x0: 0,
+            y0: 32,
+            x1: 2,
+            y1: 33,
+        };
+        let mut n = Count::default();
+        let v = render_block(
+            &block,
+            &Antialias::default(),
+            |_, y, _: &mut Count| DVec3::splat(if y == 31 { 1.0 } else { 0.0 }),
+            |_, _, _, _: &mut Count| DVec3::splat(0.5),
+            &mut n,
+        );
+        assert_eq!(n.0, 2);
+        assert_eq!(v, vec![DVec3::splat(0.5); 2]);
+    }
+
+    #[test]
+    fn blocks_cover_the_crop_with_whole_image_blocks() {
+        let crop = super::super::Crop {
+            x0: 40,
+            y0: 0,
+            x1: 70,
+            y1: 10,
+        };
+        let b = blocks(&crop, 80, 50);
+        assert_eq!(
+            b,
+            vec![
+                Block {
+                    x0: 32,
+                    y0: 0,
+                    x1: 64,
+                    y1: 32
+                },
+                Block {
+                    x0: 64,
+                    y0: 0,
+                    x1: 80,
+                    y1: 32
+                },
+            ]
+        );
+    }
 }

@@ -348,26 +348,34 @@ impl Renderer<'_> {
         sum / f64::from(n * n + 1)
     }
 
-    /// The farthest first hit of the pixel-centre rays in `crop` (0 if none).
+    /// The farthest first hit on a bounded object of the pixel-centre rays in
+    /// `crop`, or on any object when no bounded one is seen (0 if none).
     fn farthest_hit(&self, crop: &Crop) -> f64 {
-        (crop.y0..crop.y1)
+        let (bounded, any) = (crop.y0..crop.y1)
             .into_par_iter()
             .map(|y| {
-                let mut far: f64 = 0.0;
+                let (mut bounded, mut any): (f64, f64) = (0.0, 0.0);
                 for x in crop.x0..crop.x1 {
                     let mut s = self.sampler(x, y, 0);
                     let (px, py) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
-                    if let Some(ray) =
-                        primary_ray(&self.world.camera, px, py, self.w, self.h, &mut s)
+                    let ray = primary_ray(&self.world.camera, px, py, self.w, self.h, &mut s);
+                    if let Some((t, b)) =
+                        ray.and_then(|ray| passes::first_hit_distance(self.world, &ray))
                     {
-                        if let Some(t) = passes::first_hit_distance(self.world, &ray) {
-                            far = far.max(t);
+                        any = any.max(t);
+                        if b {
+                            bounded = bounded.max(t);
                         }
                     }
                 }
-                far
+                (bounded, any)
             })
-            .reduce(|| 0.0, f64::max)
+            .reduce(|| (0.0, 0.0), |a, b| (a.0.max(b.0), a.1.max(b.1)));
+        if bounded > 0.0 {
+            bounded
+        } else {
+            any
+        }
     }
 }
 

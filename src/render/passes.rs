@@ -15,8 +15,10 @@ pub enum Pass {
     #[default]
     Beauty,
     /// Distance to the first hit as grey: white at distance 0, black at `max` and
-    /// beyond and where nothing is hit. `max: None` takes the farthest hit seen by
-    /// the pixel-centre rays of the rendered region.
+    /// beyond and where nothing is hit. `max: None` takes the farthest hit on a
+    /// bounded object seen by the pixel-centre rays of the rendered region (on
+    /// any object when only unbounded ones such as planes are seen), so an
+    /// endless floor does not wash the picture out.
     Depth {
         /// The distance drawn black.
         max: Option<f64>,
@@ -37,11 +39,12 @@ impl Pass {
     }
 }
 
-/// Distance along `ray` to the first surface a camera ray sees.
-pub fn first_hit_distance(world: &World, ray: &Ray) -> Option<f64> {
+/// Distance along `ray` to the first surface a camera ray sees, and whether that
+/// surface is bounded (not an infinite plane or the like).
+pub fn first_hit_distance(world: &World, ray: &Ray) -> Option<(f64, bool)> {
     world
         .intersect(ray, 0.0, f64::INFINITY, RayKind::Camera)
-        .map(|h| h.t)
+        .map(|h| (h.t, !world.unbounded.contains(&h.prim)))
 }
 
 /// The value of `pass` (not [`Pass::Beauty`]) along `ray`; `max_depth` is the
