@@ -271,3 +271,139 @@ fn same_bytes_on_one_and_many_threads() {
     );
     assert_eq!(std::fs::read(a).unwrap(), std::fs::read(b).unwrap());
 }
+
+fn showcase() -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("examples/showcase.rts")
+        .display()
+        .to_string()
+}
+
+fn tmp(name: &str) -> String {
+    let dir = std::env::temp_dir().join(format!("rts-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name).display().to_string()
+}
+
+#[test]
+fn antialias_and_samples_same_bytes_on_one_and_four_threads() {
+    let scene = showcase();
+    for (i, mode) in [
+        &["--antialias", "0.3"][..],
+        &["--antialias", "0.1", "--aa-depth", "2", "--jitter", "0.5"],
+        &["--samples", "4", "--seed", "7"],
+    ]
+    .iter()
+    .enumerate()
+    {
+        let mut outs = Vec::new();
+        for threads in ["1", "4"] {
+            let out = tmp(&format!("aa{i}-{threads}.png"));
+            let mut args = vec![
+                "render",
+                &scene,
+                "-o",
+                &out,
+                "-W",
+                "64",
+                "-H",
+                "48",
+                "-q",
+                "--threads",
+                threads,
+            ];
+            args.extend_from_slice(mode);
+            let (code, _, err) = rts(&args);
+            assert_eq!(code, 0, "{mode:?}: {err}");
+            outs.push(std::fs::read(&out).unwrap());
+        }
+        assert_eq!(outs[0], outs[1], "{mode:?}");
+    }
+}
+
+#[test]
+fn stats_json_crop_and_formats() {
+    let scene = showcase();
+    let out = tmp("crop.exr");
+    let stats = tmp("stats.json");
+    let (code, stdout, err) = rts(&[
+        "render",
+        &scene,
+        "-o",
+        &out,
+        "-W",
+        "64",
+        "-H",
+        "48",
+        "--crop",
+        "10,5,42,29",
+        "--antialias",
+        "0.3",
+        "--stats-json",
+        &stats,
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(stdout.is_empty());
+    // Human statistics on stderr (not a terminal: no progress bar).
+    assert!(err.contains("Mrays/s") && err.contains("render"), "{err}");
+    let img = image::open(&out).unwrap();
+    assert_eq!((img.width(), img.height()), (32, 24));
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
+    assert_eq!(v["format"], "exr");
+    assert_eq!(v["pixels"], 32 * 24);
+    assert_eq!(v["crop"], serde_json::json!([10, 5, 42, 29]));
+    assert_eq!(v["sampling"]["mode"], "antialias");
+    assert!(v["rays"]["total"].as_u64().unwrap() >= v["rays"]["camera"].as_u64().unwrap());
+    for stage in ["parse_eval", "build", "render", "write", "total"] {
+        assert!(v["seconds"][stage].as_f64().unwrap() >= 0.0, "{stage}");
+    }
+    // JSON to stdout with `-`, nothing else there; -q silences stderr.
+    let (code, stdout, err) = rts(&[
+        "render",
+        &scene,
+        "-o",
+        &tmp("s.png"),
+        "-W",
+        "16",
+        "-H",
+        "12",
+        "--pass",
+        "normal",
+        "--format",
+        "ppm",
+        "--stats-json",
+        "-",
+        "-q",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.is_empty(), "{err}");
+    let v: serde_json::Value = serde_json::from_str(stdout.trim()).unwrap();
+    assert_eq!(v["pass"], "normal");
+    assert_eq!(v["format"], "ppm");
+    assert!(std::fs::read(tmp("s.png")).unwrap().starts_with(b"P6"));
+}
+
+#[test]
+fn render_option_errors_are_usage_errors() {
+    let scene = showcase();
+    let out = tmp("bad.png");
+    for (args, words) in [
+        (&["--antialias", "0.3", "--samples", "4"][..], "together"),
+        (&["--crop", "0,0,100,10"], "X1 <= 64"),
+        (&["--crop", "1,2,3"], "four whole numbers"),
+        (&["--antialias=-1"], "0 or more"),
+        (&["--antialias", "0.3", "--aa-depth", "10"], "1 to 9"),
+        (&["--samples", "0"], "1 to"),
+        (&["--pass", "depth", "--depth-max", "0"], "positive"),
+    ] {
+        let mut a = vec!["render", &scene, "-o", &out, "-W", "64", "-H", "48"];
+        a.extend_from_slice(args);
+        let (code, _, err) = rts(&a);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(err.contains(words), "{args:?}: {err}");
+    }
+    let (code, _, err) = rts(&["render", &scene, "-o", &tmp("x.jpg"), "-W", "8", "-H", "8"]);
+    assert_eq!(code, 2);
+    assert!(err.contains(".jpg") && err.contains("--format"), "{err}");
+}
