@@ -1,0 +1,55 @@
+#![allow(missing_docs)] // criterion_group! generates an undocumented function
+//! Render speed: `examples/showcase.rts` at 160 × 120, one ray per pixel, with
+//! POV-Ray's adaptive anti-aliasing (`+A0.3`) and with 4 samples per pixel. The
+//! throughput is counted in camera pixels; `rts render --stats-json` gives rays/s.
+//! Run with `cargo bench --bench render`.
+
+use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+use rts::eval::{self, EvalOptions};
+use rts::render::{render_with, Antialias, RenderOptions, Sampling, Settings};
+use rts::source::SourceMap;
+use std::path::Path;
+
+fn showcase() -> rts::build::World {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/showcase.rts");
+    let mut sources = SourceMap::new();
+    let id = eval::load_file(&mut sources, &path, "showcase.rts".into())
+        .unwrap_or_else(|_| panic!("cannot read {}", path.display()));
+    let text = sources.get(id).text.clone();
+    let (file, _) = rts::syntax::parse(&text, id);
+    let scene = eval::eval(&file, id, &mut sources, &EvalOptions::default()).scene;
+    rts::build::build(&scene)
+}
+
+fn render(c: &mut Criterion) {
+    let world = showcase();
+    let opts = RenderOptions {
+        width: 160,
+        height: 120,
+    };
+    let mut g = c.benchmark_group("showcase 160x120");
+    g.sample_size(20);
+    g.throughput(Throughput::Elements(160 * 120));
+    for (name, sampling) in [
+        ("1 ray per pixel", Sampling::Centre),
+        ("antialias 0.3", Sampling::Adaptive(Antialias::default())),
+        ("4 samples", Sampling::Fixed(4)),
+    ] {
+        let settings = Settings {
+            sampling,
+            ..Settings::default()
+        };
+        g.bench_function(name, |b| {
+            b.iter(|| {
+                render_with(&world, &opts, &settings, None)
+                    .stats
+                    .rays
+                    .total()
+            })
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, render);
+criterion_main!(benches);
