@@ -1,8 +1,8 @@
 #![allow(missing_docs)] // criterion_group! generates an undocumented function
-//! Render speed: `examples/showcase.rts` at 160 × 120, one ray per pixel, with
+//! Sampling cost: `examples/showcase.rts` at 160 × 120, one ray per pixel, with
 //! POV-Ray's adaptive anti-aliasing (`+A0.3`) and with 4 samples per pixel. The
 //! throughput is counted in camera pixels; `rts render --stats-json` gives rays/s.
-//! Run with `cargo bench --bench render`.
+//! Run with `cargo bench --bench sampling`.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use rts::eval::{self, EvalOptions};
