@@ -407,3 +407,42 @@ fn render_option_errors_are_usage_errors() {
     assert_eq!(code, 2);
     assert!(err.contains(".jpg") && err.contains("--format"), "{err}");
 }
+
+#[test]
+fn seed_002_depth_and_normal_passes() {
+    // Seed 002 draws depth as grey (white at the eye, black at maxDepth 20) and the
+    // normal as colour (n * 0.5 + 0.5). Here in POV-Ray's left-handed axes: the
+    // spheres face the camera along -z (blue near 0), the floor is up (green 255).
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("examples/seed_milo_yip.rts")
+        .display()
+        .to_string();
+    let (d, n) = (tmp("milo-depth.png"), tmp("milo-normal.png"));
+    for (pass, out, extra) in [
+        ("depth", &d, &["--depth-max", "20"][..]),
+        ("normal", &n, &[][..]),
+    ] {
+        let mut args = vec![
+            "render", &scene, "-o", out, "-W", "64", "-H", "64", "--pass", pass, "-q",
+        ];
+        args.extend_from_slice(extra);
+        let (code, _, err) = rts(&args);
+        assert_eq!(code, 0, "{err}");
+    }
+    let d = image::open(&d).unwrap().to_rgb8();
+    let n = image::open(&n).unwrap().to_rgb8();
+    // Sky: nothing hit, black in both.
+    assert_eq!(d.get_pixel(0, 0).0, [0, 0, 0]);
+    assert_eq!(n.get_pixel(0, 0).0, [0, 0, 0]);
+    // Sphere centres are about 17.4 units away: grey 255 * (1 - 17.4 / 20) ≈ 33.
+    let g = d.get_pixel(16, 24).0;
+    assert!(
+        g[0] == g[1] && g[1] == g[2] && (25..45).contains(&g[0]),
+        "{g:?}"
+    );
+    // The floor just below the camera is nearer, so brighter.
+    assert!(d.get_pixel(32, 60).0[0] > 120);
+    assert_eq!(n.get_pixel(32, 60).0, [128, 255, 128]);
+    let s = n.get_pixel(48, 24).0;
+    assert!(s[2] < 20, "{s:?}");
+}

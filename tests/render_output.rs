@@ -7,9 +7,11 @@ use render_support::*;
 use rts::build::build;
 use rts::output::{write, write_as, BitDepth, Format, Gamma, OutputOptions};
 use rts::render::{
-    render, render_with, Antialias, Crop, Film, Pass, RenderOptions, Rendered, Sampling, Settings,
+    render, render_with, Antialias, Crop, Film, Pass, Progress, RenderOptions, Rendered, Sampling,
+    Settings,
 };
 use rts::scene::{Finish, Pattern, Pigment, Reflection, Scene, Texture};
+use std::sync::atomic::Ordering;
 use std::sync::Arc;
 
 /// A small scene exercising every feature: checker floor, mirror, highlights.
@@ -476,5 +478,27 @@ fn antialiased_edge_pixels_match_povray_without_jitter() {
     for y in 0..24 {
         let v = jittered.get(16, y).x;
         assert!((0.3 - 1e-12..=0.6 + 1e-12).contains(&v), "row {y}: {v}");
+    }
+}
+
+#[test]
+fn progress_reaches_its_total() {
+    let world = build(&busy_scene());
+    let opts = RenderOptions {
+        width: 70,
+        height: 40,
+    };
+    for sampling in [Sampling::Centre, Sampling::Adaptive(Antialias::default())] {
+        let progress = Progress::default();
+        let settings = Settings {
+            sampling,
+            ..Settings::default()
+        };
+        render_with(&world, &opts, &settings, Some(&progress));
+        let total = progress.total.load(Ordering::Relaxed);
+        // Rows, or 32-pixel blocks (3 × 2) for anti-aliasing.
+        let want = if sampling == Sampling::Centre { 40 } else { 6 };
+        assert_eq!(total, want);
+        assert_eq!(progress.done.load(Ordering::Relaxed), total);
     }
 }
