@@ -3,6 +3,7 @@
 //! Every pixel is computed independently from one ray through its centre, so the
 //! result does not depend on the number of threads.
 
+mod atmosphere;
 mod camera;
 mod film;
 mod lights;
@@ -11,9 +12,10 @@ mod sampler;
 mod shade;
 mod stats;
 
+pub use atmosphere::{apply_fog, sky};
 pub use camera::primary_ray;
 pub use film::Film;
-pub use lights::{incident, Incident};
+pub use lights::{cylinder_attenuation, fade, incident, shadow, spot_attenuation, Incident};
 pub use pigment::{checker_index, evaluate as evaluate_pigment, CHECKER_OFFSET};
 pub use sampler::Sampler;
 pub use shade::{metallic_tint, metallic_weight, reflection_amount, trace, TraceCtx};

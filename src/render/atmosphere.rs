@@ -1,0 +1,153 @@
+//! What a ray meets besides objects: the sky sphere behind everything and fog
+//! along the way, as POV-Ray 3.7 defines them.
+
+use super::pigment;
+use crate::build::{Ray, World};
+use crate::scene::{Atmosphere, Fog, FogKind};
+use glam::DVec3;
+
+/// Distance a ray that hits nothing is taken to travel through fog.
+pub const MISS_DISTANCE: f64 = 1e30;
+
+/// The colour of a ray that hits nothing: the background, under the sky sphere's
+/// pigments (evaluated at the unit direction, in the sky sphere's own space; each
+/// layer lets through what lies below in proportion to its filter and transmit).
+pub fn sky(world: &World, dir: DVec3) -> DVec3 {
+    let mut out = world.background;
+    if let Some(sky) = &world.atmosphere.sky_sphere {
+        let mut d = dir.normalize();
+        if let Some(t) = &sky.transform {
+            d = t.inverse.transform_vector3(d).normalize();
+        }
+        for pig in &sky.pigments {
+            let c = pigment::evaluate(pig, d);
+            out = c.rgb * (1.0 - c.filter - c.transmit) + out * (c.transmit + c.filter * c.rgb);
+        }
+    }
+    out
+}
+
+/// `colour` seen along `ray` at distance `depth` (in units of `|ray.dir|`), after
+/// every fog of `atmosphere` in order.
+pub fn apply_fog(atmosphere: &Atmosphere, ray: &Ray, depth: f64, colour: DVec3) -> DVec3 {
+    let mut out = colour;
+    for fog in &atmosphere.fogs {
+        let len = ray.dir.length();
+        let dist = depth * len;
+        let k = transmittance(fog, ray.origin, ray.dir / len, dist);
+        out = blend(fog, k, out);
+    }
+    out
+}
+
+/// How much of what lies `dist` away along unit `dir` from `origin` shows through
+/// `fog`: `exp(-D / distance)`, D the distance weighted by the fog's density.
+pub fn transmittance(fog: &Fog, origin: DVec3, dir: DVec3, dist: f64) -> f64 {
+    let depth = match fog.kind {
+        FogKind::Constant => dist,
+        FogKind::Ground { offset, alt, up } => {
+            let h0 = origin.dot(up);
+            let dh = dir.dot(up);
+            if dh.abs() < 1e-12 {
+                dist * ground_density(h0, offset, alt)
+            } else {
+                let h1 = h0 + dist * dh;
+                (ground_integral(h1, offset, alt) - ground_integral(h0, offset, alt)) / dh
+            }
+        }
+    };
+    if !depth.is_finite() {
+        return 0.0;
+    }
+    (-depth / fog.distance).exp()
+}
+
+/// A fog's blend of the colour behind it with transmittance `k`: the fog covers
+/// `1 - k` of it, adding its colour where it is opaque and letting through its
+/// filtered and transmitted share.
+fn blend(fog: &Fog, k: f64, behind: DVec3) -> DVec3 {
+    let c = fog.colour;
+    let cover = 1.0 - k;
+    let pass = DVec3::splat(k) + cover * (c.filter * c.rgb + DVec3::splat(c.transmit));
+    behind * pass + cover * (1.0 - c.filter - c.transmit) * c.rgb
+}
+
+/// Ground fog density at height `h`: 1 up to `offset`, `1 / (1 + (h - offset) / alt)²`
+/// above.
+fn ground_density(h: f64, offset: f64, alt: f64) -> f64 {
+    if h <= offset {
+        1.0
+    } else {
+        let x = 1.0 + (h - offset) / alt;
+        1.0 / (x * x)
+    }
+}
+
+/// A primitive of [`ground_density`] over height.
+fn ground_integral(h: f64, offset: f64, alt: f64) -> f64 {
+    if h <= offset {
+        h
+    } else {
+        offset + alt * (1.0 - 1.0 / (1.0 + (h - offset) / alt))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Colour;
+
+    fn fog(kind: FogKind) -> Fog {
+        Fog {
+            kind,
+            distance: 10.0,
+            colour: Colour::rgb(0.5, 0.6, 0.7),
+        }
+    }
+
+    #[test]
+    fn constant_fog_is_exponential_in_distance() {
+        let f = fog(FogKind::Constant);
+        let k = transmittance(&f, DVec3::ZERO, DVec3::Z, 10.0);
+        assert!((k - (-1.0f64).exp()).abs() < 1e-12);
+        let c = blend(&f, k, DVec3::ONE);
+        let want = DVec3::ONE * k + (1.0 - k) * DVec3::new(0.5, 0.6, 0.7);
+        assert!((c - want).length() < 1e-12);
+        assert_eq!(transmittance(&f, DVec3::ZERO, DVec3::Z, MISS_DISTANCE), 0.0);
+    }
+
+    #[test]
+    fn transmitting_fog_lets_the_background_through() {
+        let mut f = fog(FogKind::Constant);
+        f.colour.transmit = 1.0;
+        assert_eq!(
+            blend(&f, 0.0, DVec3::new(0.2, 0.3, 0.4)),
+            DVec3::new(0.2, 0.3, 0.4)
+        );
+    }
+
+    #[test]
+    fn ground_fog_integrates_its_density() {
+        let f = fog(FogKind::Ground {
+            offset: 1.0,
+            alt: 2.0,
+            up: DVec3::Y,
+        });
+        // Horizontal below the offset: full density.
+        let k = transmittance(&f, DVec3::ZERO, DVec3::X, 10.0);
+        assert!((k - (-1.0f64).exp()).abs() < 1e-12);
+        // Straight up from 0 to 3: 1 (below) + ∫₁³ 1/(1+(h-1)/2)² dh = 1 + 1.
+        let k = transmittance(&f, DVec3::ZERO, DVec3::Y, 3.0);
+        assert!((k - (-0.2f64).exp()).abs() < 1e-12);
+        // Numerical check along a slanted ray.
+        let dir = DVec3::new(1.0, 0.3, 0.0).normalize();
+        let n = 100_000;
+        let mut sum = 0.0;
+        for i in 0..n {
+            let t = (i as f64 + 0.5) * 20.0 / n as f64;
+            sum += ground_density(t * dir.y, 1.0, 2.0) * 20.0 / n as f64;
+        }
+        let k = transmittance(&f, DVec3::ZERO, dir, 20.0);
+        assert!((k - (-sum / 10.0).exp()).abs() < 1e-6);
+    }
+}
