@@ -62,24 +62,24 @@ pub fn transmittance(fog: &Fog, origin: DVec3, dir: DVec3, dist: f64) -> f64 {
     (-depth / fog.distance).exp()
 }
 
-/// A fog's blend of the colour behind it with transmittance `k`: the fog covers
-/// `1 - k` of it, adding its colour where it is opaque and letting through its
-/// filtered and transmitted share.
+/// A fog's blend of the colour behind it with transmittance `k`. Measured in
+/// POV-Ray 3.7: the fog's `transmit` is the least transmittance, `w = max(k,
+/// transmit)`; what shows through is filtered, `w (1 - filter + filter colour)`,
+/// and the fog adds `(1 - w) colour`.
 fn blend(fog: &Fog, k: f64, behind: DVec3) -> DVec3 {
     let c = fog.colour;
-    let cover = 1.0 - k;
-    let pass = DVec3::splat(k) + cover * (c.filter * c.rgb + DVec3::splat(c.transmit));
-    behind * pass + cover * (1.0 - c.filter - c.transmit) * c.rgb
+    let w = k.max(c.transmit);
+    w * behind * (DVec3::splat(1.0 - c.filter) + c.filter * c.rgb) + (1.0 - w) * c.rgb
 }
 
-/// Ground fog density at height `h`: 1 up to `offset`, `1 / (1 + (h - offset) / alt)²`
-/// above.
+/// Ground fog density at height `h`: 1 up to `offset`, `1 / (1 + ((h - offset) /
+/// alt)²)` above (measured against POV-Ray 3.7).
 fn ground_density(h: f64, offset: f64, alt: f64) -> f64 {
     if h <= offset {
         1.0
     } else {
-        let x = 1.0 + (h - offset) / alt;
-        1.0 / (x * x)
+        let x = (h - offset) / alt;
+        1.0 / (1.0 + x * x)
     }
 }
 
@@ -88,7 +88,7 @@ fn ground_integral(h: f64, offset: f64, alt: f64) -> f64 {
     if h <= offset {
         h
     } else {
-        offset + alt * (1.0 - 1.0 / (1.0 + (h - offset) / alt))
+        offset + alt * ((h - offset) / alt).atan()
     }
 }
 
@@ -136,9 +136,10 @@ mod tests {
         // Horizontal below the offset: full density.
         let k = transmittance(&f, DVec3::ZERO, DVec3::X, 10.0);
         assert!((k - (-1.0f64).exp()).abs() < 1e-12);
-        // Straight up from 0 to 3: 1 (below) + ∫₁³ 1/(1+(h-1)/2)² dh = 1 + 1.
+        // Straight up from 0 to 3: 1 (below) + ∫₁³ 1/(1+((h-1)/2)²) dh = 1 + 2 atan 1.
         let k = transmittance(&f, DVec3::ZERO, DVec3::Y, 3.0);
-        assert!((k - (-0.2f64).exp()).abs() < 1e-12);
+        let want = (-(1.0 + 2.0 * 1f64.atan()) / 10.0).exp();
+        assert!((k - want).abs() < 1e-12);
         // Numerical check along a slanted ray.
         let dir = DVec3::new(1.0, 0.3, 0.0).normalize();
         let n = 100_000;

@@ -39,7 +39,7 @@ pub enum FogKind {
     /// `fog_type 1`: the same density everywhere.
     Constant,
     /// `fog_type 2`: full density below `offset` along `up`, decreasing as
-    /// `1 / (1 + (h - offset) / alt)²` above it.
+    /// `1 / (1 + ((h - offset) / alt)²)` above it.
     Ground {
         /// `fog_offset`: height below which the fog is at full density.
         offset: f64,
