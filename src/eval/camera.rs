@@ -7,6 +7,7 @@ use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
 use crate::scene::{Camera, CameraKind, Transform};
 use crate::span::Span;
+use glam::DVec3;
 
 const CAMERA_ITEMS: &[&str] = &[
     "perspective",
@@ -82,8 +83,14 @@ impl Evaluator<'_> {
                     match kw {
                         "location" => cam.location = v,
                         "look_at" => cam.look_at = Some(v),
-                        "up" => cam.up = v,
-                        "right" => cam.right = v,
+                        "up" => {
+                            cam.up = v;
+                            cam.sized = true;
+                        }
+                        "right" => {
+                            cam.right = v;
+                            cam.sized = true;
+                        }
                         "direction" => cam.direction = v,
                         "focal_point" => cam.focal_point = v,
                         _ => cam.sky = v,
@@ -213,6 +220,11 @@ impl Evaluator<'_> {
                 "orthographic" => ortho_angle = Some(angle),
                 _ => {}
             }
+        } else if spec.projection == "orthographic" && !spec.sized {
+            // Measured in POV-Ray 3.7: without `angle`, `right` or `up`, an
+            // orthographic camera shows what the perspective camera
+            // of the same vectors shows at the look_at distance.
+            ortho_angle = Some(2.0 * (0.5 * right.length() / dir.length()).atan().to_degrees());
         }
         if let Some(target) = spec.look_at {
             let d = target - spec.location;
@@ -246,9 +258,8 @@ impl Evaluator<'_> {
             }
             // The view is as wide as a perspective camera's with this angle at the
             // distance of `look_at` (or of `direction`'s length).
-            let dist = spec
-                .look_at
-                .map_or(dir.length(), |t| (t - spec.location).length());
+            // POV-Ray's look_at defaults to <0, 0, 1> for this (measured).
+            let dist = (spec.look_at.unwrap_or(DVec3::Z) - spec.location).length();
             let width = 2.0 * dist * (angle.to_radians() / 2.0).tan();
             let k = width / right.length();
             right *= k;

@@ -80,6 +80,9 @@ pub struct CameraSpec {
     pub focal_point: DVec3,
     /// `blur_samples` (the larger value of `blur_samples MIN, MAX`).
     pub blur_samples: u32,
+    /// Whether `right` or `up` was written (an orthographic camera then keeps their
+    /// sizes).
+    pub sized: bool,
 }
 
 impl Default for CameraSpec {
@@ -98,6 +101,7 @@ impl Default for CameraSpec {
             aperture: 0.0,
             focal_point: DVec3::ZERO,
             blur_samples: 1,
+            sized: false,
         }
     }
 }
