@@ -269,8 +269,10 @@ impl Evaluator<'_> {
         let kind = match spec.projection {
             "orthographic" => CameraKind::Orthographic,
             "fisheye" => CameraKind::Fisheye { angle: h },
-            "ultra_wide_angle" => CameraKind::UltraWideAngle { angle: h },
-            "panoramic" => CameraKind::Panoramic { angle: h },
+            "ultra_wide_angle" => CameraKind::UltraWideAngle {
+                angle: spec.angle.unwrap_or(90.0),
+            },
+            "panoramic" => CameraKind::Panoramic,
             "spherical" => {
                 let h = spec.angle.unwrap_or(360.0);
                 CameraKind::Spherical {

@@ -72,15 +72,17 @@ fn pinhole(camera: &Camera, sx: f64, sy: f64) -> Option<(DVec3, DVec3)> {
             let half = angle.to_radians() / 2.0;
             let lon = 2.0 * sx * half;
             let lat = 2.0 * sy * half / aspect;
+            (
+                loc,
+                lon.sin() * rn + lat.sin() * un + lon.cos() * lat.cos() * dn,
+            )
+        }
+        CameraKind::Panoramic => {
+            let lon = 2.0 * (2.0 * sx).atan();
+            let lat = sy * std::f64::consts::PI;
             let (sl, cl) = lon.sin_cos();
             let (sb, cb) = lat.sin_cos();
-            (loc, sl * cb * rn + sb * un + cl * cb * dn)
-        }
-        CameraKind::Panoramic { angle } => {
-            let half = angle.to_radians() / 2.0;
-            let lon = 2.0 * sx * half;
-            let (sl, cl) = lon.sin_cos();
-            (loc, sl * rn + 2.0 * sy * half / aspect * un + cl * dn)
+            (loc, cb * sl * rn + sb * un + cb * cl * dn)
         }
         CameraKind::Spherical { h_angle, v_angle } => {
             let lon = sx * h_angle.to_radians();

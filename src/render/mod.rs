@@ -67,7 +67,21 @@ pub fn render(world: &World, opts: &RenderOptions) -> Film {
 
 /// The working-space colour of pixel (`i`, `j`), `j = 0` at the top.
 pub fn render_pixel(world: &World, i: u32, j: u32, width: u32, height: u32) -> DVec3 {
-    let mut sampler = Sampler::new(0, 0, i, j, 0);
+    // A depth-of-field camera averages `blur_samples` lens samples per pixel.
+    let cam = &world.camera;
+    if cam.aperture > 0.0 && cam.blur_samples > 1 {
+        let n = cam.blur_samples;
+        let sum: DVec3 = (0..n)
+            .map(|s| sample_pixel(world, i, j, s, width, height))
+            .sum();
+        return sum / f64::from(n);
+    }
+    sample_pixel(world, i, j, 0, width, height)
+}
+
+/// Sample `index` of pixel (`i`, `j`), through the pixel centre.
+fn sample_pixel(world: &World, i: u32, j: u32, index: u32, width: u32, height: u32) -> DVec3 {
+    let mut sampler = Sampler::new(0, 0, i, j, index);
     let mut stats = RayStats::default();
     let mut ctx = TraceCtx {
         sampler: &mut sampler,

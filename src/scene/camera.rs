@@ -19,18 +19,16 @@ pub enum CameraKind {
         /// Full field of view in degrees (default 180).
         angle: f64,
     },
-    /// `ultra_wide_angle`: longitude `2 sx · angle/2`, latitude `2 sy · angle/2 ·
-    /// |up|/|right|`.
+    /// `ultra_wide_angle`: with longitude `2 sx · angle/2` and latitude
+    /// `2 sy · angle/2 · |up|/|right|`, the direction
+    /// `sin(lon) right + sin(lat) up + cos(lon) cos(lat) direction` (unit vectors).
     UltraWideAngle {
-        /// Horizontal field of view in degrees (default 180).
+        /// Horizontal field of view in degrees (default 90).
         angle: f64,
     },
-    /// `panoramic`: horizontal longitude like a cylinder around `up`, vertical
-    /// `tan`-spaced latitude.
-    Panoramic {
-        /// Horizontal field of view in degrees (default 180).
-        angle: f64,
-    },
+    /// `panoramic`: latitude `π sy` and longitude `2 atan(2 sx)` (180° across the
+    /// image); POV-Ray ignores `angle` for it.
+    Panoramic,
     /// `spherical`: longitude and latitude mapped linearly onto the image.
     Spherical {
         /// Horizontal field of view in degrees (default 360).
