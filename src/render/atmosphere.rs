@@ -27,17 +27,25 @@ pub fn sky(world: &World, dir: DVec3) -> DVec3 {
     out
 }
 
-/// `colour` seen along `ray` at distance `depth` (in units of `|ray.dir|`), after
-/// every fog of `atmosphere` in order.
+/// `colour` seen along `ray` at distance `depth` (in units of `|ray.dir|`), through
+/// every fog of `atmosphere`. As measured in POV-Ray 3.7, several fogs do not lie
+/// over one another: what is behind is dimmed by all of them and their colours
+/// add up (so two fogs can be brighter than either).
 pub fn apply_fog(atmosphere: &Atmosphere, ray: &Ray, depth: f64, colour: DVec3) -> DVec3 {
-    let mut out = colour;
-    for fog in &atmosphere.fogs {
-        let len = ray.dir.length();
-        let dist = depth * len;
-        let k = transmittance(fog, ray.origin, ray.dir / len, dist);
-        out = blend(fog, k, out);
+    if atmosphere.fogs.is_empty() {
+        return colour;
     }
-    out
+    let len = ray.dir.length();
+    let (dir, dist) = (ray.dir / len, depth * len);
+    let mut through = colour;
+    let mut added = DVec3::ZERO;
+    for fog in &atmosphere.fogs {
+        let k = transmittance(fog, ray.origin, dir, dist);
+        let (pass, own) = blend(fog, k);
+        through *= pass;
+        added += own;
+    }
+    through + added
 }
 
 /// How much of what lies `dist` away along unit `dir` from `origin` shows through
@@ -62,14 +70,17 @@ pub fn transmittance(fog: &Fog, origin: DVec3, dir: DVec3, dist: f64) -> f64 {
     (-depth / fog.distance).exp()
 }
 
-/// A fog's blend of the colour behind it with transmittance `k`. Measured in
-/// POV-Ray 3.7: the fog's `transmit` is the least transmittance, `w = max(k,
-/// transmit)`; what shows through is filtered, `w (1 - filter + filter colour)`,
-/// and the fog adds `(1 - w) colour`.
-fn blend(fog: &Fog, k: f64, behind: DVec3) -> DVec3 {
+/// A fog with transmittance `k` passes `pass` times the colour behind it and adds
+/// `own`. Measured in POV-Ray 3.7: the fog's `transmit` is the least transmittance,
+/// `w = max(k, transmit)`; `pass = w (1 - filter + filter colour)` and
+/// `own = (1 - w) colour`.
+fn blend(fog: &Fog, k: f64) -> (DVec3, DVec3) {
     let c = fog.colour;
     let w = k.max(c.transmit);
-    w * behind * (DVec3::splat(1.0 - c.filter) + c.filter * c.rgb) + (1.0 - w) * c.rgb
+    (
+        w * (DVec3::splat(1.0 - c.filter) + c.filter * c.rgb),
+        (1.0 - w) * c.rgb,
+    )
 }
 
 /// Ground fog density at height `h`: 1 up to `offset`, `1 / (1 + ((h - offset) /
@@ -110,7 +121,8 @@ mod tests {
         let f = fog(FogKind::Constant);
         let k = transmittance(&f, DVec3::ZERO, DVec3::Z, 10.0);
         assert!((k - (-1.0f64).exp()).abs() < 1e-12);
-        let c = blend(&f, k, DVec3::ONE);
+        let (pass, own) = blend(&f, k);
+        let c = pass * DVec3::ONE + own;
         let want = DVec3::ONE * k + (1.0 - k) * DVec3::new(0.5, 0.6, 0.7);
         assert!((c - want).length() < 1e-12);
         assert_eq!(transmittance(&f, DVec3::ZERO, DVec3::Z, MISS_DISTANCE), 0.0);
