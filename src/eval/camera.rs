@@ -101,7 +101,15 @@ impl Evaluator<'_> {
                     c.once("angle", span)?;
                     let (v, s) = c.value("the field of view in degrees")?;
                     let a = self.to_float(&v, s)?;
-                    if a <= 0.0 || a > 360.0 {
+                    if cam.projection == "perspective" && a >= 180.0 {
+                        Err(Diagnostic::error(
+                            codes::OUT_OF_RANGE,
+                            s,
+                            format!("a perspective camera's angle must be below 180 degrees, found {a}"),
+                        )
+                        .with_help("typical values are 30 to 90; use `fisheye` or `spherical` for wider views")
+                        .into())
+                    } else if a <= 0.0 || a > 360.0 {
                         return_range(s, format!("a camera's angle must be above 0 and at most 360 degrees, found {a}"))
                     } else {
                         cam.angle = Some(a);

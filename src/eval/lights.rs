@@ -291,15 +291,11 @@ impl Evaluator<'_> {
         c.comma();
         let axis2 = self.take_vec3(c, "the second axis of the area light")?;
         c.comma();
+        let (n1, s1) = c.value("the number of lights along the first axis")?;
+        c.comma();
+        let (n2, s2) = c.value("the number of lights along the second axis")?;
         let mut size = [1u32; 2];
-        for (i, what) in [
-            "the number of lights along the first axis",
-            "the number of lights along the second axis",
-        ]
-        .iter()
-        .enumerate()
-        {
-            let (v, s) = c.value(what)?;
+        for (i, (v, s)) in [(n1, s1), (n2, s2)].into_iter().enumerate() {
             let n = self.to_float(&v, s)?;
             if !(1.0..=1024.0).contains(&n) {
                 return Err(out_of_range(
@@ -309,9 +305,6 @@ impl Evaluator<'_> {
                 ));
             }
             size[i] = n as u32;
-            if i == 0 {
-                c.comma();
-            }
         }
         if axis1.length_squared() == 0.0 || axis2.length_squared() == 0.0 {
             return Err(out_of_range(
