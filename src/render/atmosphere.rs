@@ -132,10 +132,18 @@ mod tests {
     fn transmitting_fog_lets_the_background_through() {
         let mut f = fog(FogKind::Constant);
         f.colour.transmit = 1.0;
-        assert_eq!(
-            blend(&f, 0.0, DVec3::new(0.2, 0.3, 0.4)),
-            DVec3::new(0.2, 0.3, 0.4)
-        );
+        assert_eq!(blend(&f, 0.0), (DVec3::ONE, DVec3::ZERO));
+        // POV-Ray 3.7, fog rgbft <0.9, 0.5, 0.2, 0.5, 0.5> over <0.2, 0.4, 0.8>
+        // where k = 0: 0.545, 0.4, 0.341 (8-bit linear).
+        let mut f = fog(FogKind::Constant);
+        f.colour = Colour {
+            rgb: DVec3::new(0.9, 0.5, 0.2),
+            filter: 0.5,
+            transmit: 0.5,
+        };
+        let (pass, own) = blend(&f, 0.0);
+        let c = DVec3::new(0.2, 0.4, 0.8) * pass + own;
+        assert!((c - DVec3::new(0.545, 0.4, 0.341)).abs().max_element() < 0.003);
     }
 
     #[test]
