@@ -30,6 +30,13 @@ pub fn incident(
     n: DVec3,
     ctx: &mut TraceCtx,
 ) -> Option<Incident> {
+    // Measured in POV-Ray 3.7: a `shadowless` spotlight or cylinder light loses its
+    // beam (a cylinder light still shines along its axis).
+    let kind = if light.shadowless {
+        LightKind::Point
+    } else {
+        light.kind
+    };
     // Cylinder lights shine along their axis, like parallel lights (as measured in
     // POV-Ray 3.7: the whole beam has cos = 1 on a plane across it).
     let along_axis = light.parallel || matches!(light.kind, LightKind::Cylinder(_));
@@ -47,7 +54,7 @@ pub fn incident(
         return None;
     }
     let mut colour = light.colour * fade(light.fade_distance, light.fade_power, dist);
-    colour *= match light.kind {
+    colour *= match kind {
         LightKind::Point => 1.0,
         LightKind::Spot(beam) => {
             let axis = (light.point_at - light.location).normalize();
