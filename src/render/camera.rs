@@ -37,7 +37,9 @@ pub fn primary_ray(
     let focus = origin + dir * (camera.focal_distance / along);
     let (a, b) = sampler.next_2d();
     let (lx, ly) = disc(a, b);
-    let lens = 0.5
+    // Lens radius aperture / 4: measured against POV-Ray 3.7 (255 blur samples),
+    // this gives the same width of blur; aperture / 2 blurs twice as much.
+    let lens = 0.25
         * camera.aperture
         * (lx * camera.right.normalize_or_zero() + ly * camera.up.normalize_or_zero());
     let o = origin + lens;
@@ -184,7 +186,7 @@ mod tests {
                 primary_ray(&c, 30.0, 60.0, 100, 100, &mut Sampler::new(0, 0, 1, 2, i)).unwrap();
             let t = (focus.z - r.origin.z) / r.dir.z;
             assert!((r.origin + r.dir * t - focus).length() < 1e-9);
-            assert!(r.origin.z == 0.0 && r.origin.length() <= 0.25 + 1e-12);
+            assert!(r.origin.z == 0.0 && r.origin.length() <= 0.125 + 1e-12);
         }
     }
 }

@@ -53,7 +53,8 @@ pub struct Camera {
     pub right: DVec3,
     /// Full image-plane vector from bottom edge to top edge.
     pub up: DVec3,
-    /// `aperture`: diameter of the lens for depth of field (0 = pinhole).
+    /// `aperture`: size of the lens for depth of field (0 = pinhole); the lens radius
+    /// is aperture / 4, which blurs as much as POV-Ray 3.7.
     pub aperture: f64,
     /// Distance from `location` (along `direction`) of the plane in focus, from
     /// `focal_point`.
