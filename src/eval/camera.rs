@@ -188,7 +188,7 @@ impl Evaluator<'_> {
     /// Turns a camera as written into the vectors the renderer uses, as POV-Ray does:
     /// `angle` sets the length of `direction` from `right`; `look_at` turns the camera
     /// about `sky`, keeping the lengths and handedness of `right`, `up` and `direction`.
-    pub(crate) fn resolve_camera(&self, spec: &CameraSpec, span: Span) -> R<Camera> {
+    pub(crate) fn resolve_camera(&mut self, spec: &CameraSpec, span: Span) -> R<Camera> {
         let bad = |msg: &str, help: &str| -> Fail {
             Diagnostic::error(codes::BAD_CAMERA, span, msg.to_string())
                 .with_help(help.to_string())
@@ -243,12 +243,27 @@ impl Evaluator<'_> {
                 ));
             }
             let d = d.normalize();
-            let r = spec.sky.cross(d);
+            let mut r = spec.sky.cross(d);
             if r.length_squared() < 1e-20 {
-                return Err(bad(
-                    "the camera looks straight along `sky`, so its roll is undefined",
-                    "give a `sky` vector that is not parallel to the view direction, e.g. `sky z`",
-                ));
+                // POV-Ray warns and keeps the written `right` (measured: the picture
+                // is the one `sky z` gives for a camera looking down).
+                let along = right - right.dot(d) * d;
+                if along.length_squared() < 1e-20 {
+                    return Err(bad(
+                        "the camera looks straight along `sky` and along `right`, so its roll is undefined",
+                        "give a `sky` vector that is not parallel to the view direction, e.g. `sky z`",
+                    ));
+                }
+                self.report(
+                    Diagnostic::warning(
+                        codes::BAD_CAMERA,
+                        span,
+                        "the camera looks straight along `sky`; its `right` vector sets the roll",
+                    )
+                    .with_help("give a `sky` vector that is not parallel to the view direction, e.g. `sky z`")
+                    .into(),
+                );
+                r = along * handed.signum();
             }
             let r = r.normalize();
             let u = d.cross(r);
