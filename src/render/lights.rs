@@ -328,22 +328,16 @@ impl Grid<'_> {
     }
 }
 
-/// Maps a point of the square [-0.5, 0.5]² onto the disc of radius 0.5, keeping
-/// concentric squares on concentric circles (Shirley's mapping).
+/// Maps a point of the square [-0.5, 0.5]² onto the disc of radius 0.5 as POV-Ray
+/// 3.7 does (measured through a pinhole): each point moves along its radius so that
+/// the square rings of the grid become circles, `p · max(|x|, |y|) / |p|`.
 fn square_to_disc(s: f64, t: f64) -> (f64, f64) {
-    let (a, b) = (2.0 * s, 2.0 * t);
-    if a == 0.0 && b == 0.0 {
+    let len = (s * s + t * t).sqrt();
+    if len == 0.0 {
         return (0.0, 0.0);
     }
-    let (r, phi) = if a.abs() > b.abs() {
-        (a, std::f64::consts::FRAC_PI_4 * (b / a))
-    } else {
-        (
-            b,
-            std::f64::consts::FRAC_PI_2 - std::f64::consts::FRAC_PI_4 * (a / b),
-        )
-    };
-    (0.5 * r * phi.cos(), 0.5 * r * phi.sin())
+    let k = s.abs().max(t.abs()) / len;
+    (s * k, t * k)
 }
 
 #[cfg(test)]
@@ -402,6 +396,9 @@ mod tests {
         }
         let (x, y) = square_to_disc(0.5, 0.0);
         assert!((x - 0.5).abs() < 1e-12 && y.abs() < 1e-12);
+        // Measured in POV-Ray: grid point (1, 0.5) of [-1, 1]² lands at (0.894, 0.447).
+        let (x, y) = square_to_disc(0.5, 0.25);
+        assert!((x - 0.4472).abs() < 1e-4 && (y - 0.2236).abs() < 1e-4);
     }
 
     #[test]
