@@ -80,11 +80,12 @@ fn pinhole(camera: &Camera, sx: f64, sy: f64) -> Option<(DVec3, DVec3)> {
             )
         }
         CameraKind::Panoramic => {
-            let lon = 2.0 * (2.0 * sx).atan();
-            let lat = sy * std::f64::consts::PI;
-            let (sl, cl) = lon.sin_cos();
-            let (sb, cb) = lat.sin_cos();
-            (loc, cb * sl * rn + sb * un + cb * cl * dn)
+            let (a, b) = (std::f64::consts::PI * sx, std::f64::consts::PI * sy);
+            if b.abs() >= std::f64::consts::FRAC_PI_2 - 1e-12 {
+                (loc, un * b.signum())
+            } else {
+                (loc, a.sin() * r + b.tan() * u + a.cos() * d)
+            }
         }
         CameraKind::Spherical { h_angle, v_angle } => {
             let lon = sx * h_angle.to_radians();

@@ -26,8 +26,9 @@ pub enum CameraKind {
         /// Horizontal field of view in degrees (default 90).
         angle: f64,
     },
-    /// `panoramic`: latitude `π sy` and longitude `2 atan(2 sx)` (180° across the
-    /// image); POV-Ray ignores `angle` for it.
+    /// `panoramic`: with `a = π sx` and `b = π sy`, the direction
+    /// `sin(a) right + tan(b) up + cos(a) direction` (the vectors as they are, not
+    /// normalised; measured against POV-Ray 3.7, which ignores `angle` for it).
     Panoramic,
     /// `spherical`: longitude and latitude mapped linearly onto the image.
     Spherical {
