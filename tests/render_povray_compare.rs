@@ -12,8 +12,7 @@ use rts::build::build;
 use rts::output::{write, BitDepth, Gamma, OutputOptions};
 use rts::render::{render, RenderOptions};
 use rts::scene::{
-    Camera, Finish, LightKind, Object, Pattern, Pigment, Reflection, Scene, Shape, Texture,
-    Transform,
+    Camera, Finish, Object, Pattern, Pigment, Reflection, Scene, Shape, Texture, Transform,
 };
 use std::sync::Arc;
 
@@ -142,9 +141,7 @@ pub fn compare_scene() -> Scene {
     l1.colour = DVec3::new(1.0, 0.9, 0.8);
     let mut l2 = point_light(DVec3::new(3.0, 5.0, -1.0));
     l2.colour = DVec3::splat(0.4);
-    l2.kind = LightKind::Parallel {
-        point_at: DVec3::ZERO,
-    };
+    l2.parallel = true;
     sc.lights = vec![l1, l2];
     sc
 }

@@ -6,7 +6,7 @@ use glam::DVec3;
 use render_support::*;
 use rts::build::build;
 use rts::render::{render, RenderOptions};
-use rts::scene::{Finish, LightKind, Reflection, Transform};
+use rts::scene::{Finish, Reflection, Transform};
 
 const EPS: f64 = 1e-12;
 
@@ -141,9 +141,7 @@ fn shadow_scene(no_shadow: bool, shadowless: bool, blocker_y: f64, parallel: boo
     let mut l = point_light(DVec3::new(0.0, 10.0, 0.0));
     l.shadowless = shadowless;
     if parallel {
-        l.kind = LightKind::Parallel {
-            point_at: DVec3::ZERO,
-        };
+        l.parallel = true;
     }
     sc.lights.push(l);
     render(
@@ -208,9 +206,7 @@ fn parallel_light_direction_is_the_same_everywhere() {
     let floor = with_texture(plane(DVec3::Y, 0.0), texture(DVec3::ONE, matte(0.0, 1.0)));
     let mut sc = scene(cam, vec![floor]);
     let mut l = point_light(DVec3::new(1.0, 1.0, 0.0));
-    l.kind = LightKind::Parallel {
-        point_at: DVec3::ZERO,
-    };
+    l.parallel = true;
     sc.lights.push(l);
     let film = render(
         &build(&sc),

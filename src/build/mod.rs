@@ -56,6 +56,8 @@ pub struct World {
     pub background: DVec3,
     /// Global settings.
     pub global: GlobalSettings,
+    /// `sky_sphere` and `fog`.
+    pub atmosphere: crate::scene::Atmosphere,
     /// Every primitive, bounded ones first.
     pub primitives: Vec<Primitive>,
     /// Indices of the unbounded primitives (planes), tested on every ray.
@@ -93,6 +95,7 @@ pub fn build(scene: &Scene) -> World {
         lights: scene.lights.clone(),
         background: scene.background.rgb,
         global: scene.global.clone(),
+        atmosphere: scene.atmosphere.clone(),
         bounds: bvh.bounds(),
         primitives: prims,
         unbounded,

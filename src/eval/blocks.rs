@@ -23,6 +23,9 @@ const BLOCKS: &[&str] = &[
     "transform",
     "global_settings",
     "background",
+    "sky_sphere",
+    "fog",
+    "looks_like",
 ];
 
 /// POV-Ray blocks that a later release implements.
@@ -59,15 +62,12 @@ const LATER_BLOCKS: &[&str] = &[
     "pigment_map",
     "normal_map",
     "texture_map",
-    "sky_sphere",
-    "fog",
     "media",
     "photons",
     "radiosity",
     "spline",
     "light_group",
     "image_map",
-    "area_light",
     "bounded_by",
     "clipped_by",
 ];
@@ -116,6 +116,15 @@ impl Evaluator<'_> {
             "camera" => Value::Camera(std::sync::Arc::new(self.camera(&mut c)?)),
             "light_source" => Value::Light(std::sync::Arc::new(self.light(&mut c)?)),
             "transform" => Value::Transform(std::sync::Arc::new(self.transform_block(&mut c)?)),
+            "looks_like" => Value::Object(std::sync::Arc::new(self.looks_like(&mut c)?)),
+            "sky_sphere" => {
+                self.sky_sphere(&mut c)?;
+                return Ok(None);
+            }
+            "fog" => {
+                self.fog(&mut c)?;
+                return Ok(None);
+            }
             "global_settings" => {
                 self.global_settings(&mut c);
                 return Ok(None);

@@ -5,12 +5,22 @@ use super::objects::TRANSFORMS;
 use super::value::{CameraSpec, Value};
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
-use crate::scene::{Camera, CameraKind, Light, LightKind, Transform};
+use crate::scene::{Camera, CameraKind, Transform};
 use crate::span::Span;
 use glam::DVec3;
 
 const CAMERA_ITEMS: &[&str] = &[
     "perspective",
+    "orthographic",
+    "fisheye",
+    "ultra_wide_angle",
+    "panoramic",
+    "spherical",
+    "aperture",
+    "focal_point",
+    "blur_samples",
+    "confidence",
+    "variance",
     "location",
     "look_at",
     "up",
@@ -24,45 +34,15 @@ const CAMERA_ITEMS: &[&str] = &[
     "matrix",
     "transform",
 ];
-const LATER_CAMERA: &[&str] = &[
+const LATER_CAMERA: &[&str] = &["cylinder", "omnimax", "mesh_camera", "normal"];
+/// The projection keywords.
+const PROJECTIONS: &[&str] = &[
+    "perspective",
     "orthographic",
     "fisheye",
     "ultra_wide_angle",
     "panoramic",
     "spherical",
-    "cylinder",
-    "focal_point",
-    "aperture",
-    "blur_samples",
-    "normal",
-];
-const LIGHT_ITEMS: &[&str] = &[
-    "parallel",
-    "point_at",
-    "shadowless",
-    "translate",
-    "rotate",
-    "scale",
-    "matrix",
-    "transform",
-];
-const LATER_LIGHT: &[&str] = &[
-    "spotlight",
-    "radius",
-    "falloff",
-    "tightness",
-    "area_light",
-    "jitter",
-    "adaptive",
-    "circular",
-    "orient",
-    "fade_distance",
-    "fade_power",
-    "looks_like",
-    "cylinder",
-    "media_interaction",
-    "media_attenuation",
-    "photons",
 ];
 const GLOBAL_ITEMS: &[&str] = &[
     "ambient_light",
@@ -70,6 +50,13 @@ const GLOBAL_ITEMS: &[&str] = &[
     "max_trace_level",
     "adc_bailout",
 ];
+
+/// An out-of-range camera value.
+fn return_range(span: Span, msg: String) -> R<()> {
+    Err(Diagnostic::error(codes::OUT_OF_RANGE, span, msg)
+        .with_help("typical angles are 30 to 90 (perspective) and 180 (fisheye)")
+        .into())
+}
 
 impl Evaluator<'_> {
     /// `camera { [Name] perspective location … look_at … angle … }`.
@@ -83,9 +70,12 @@ impl Evaluator<'_> {
         };
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
-                Tok::Kw("perspective", _) => Ok(()),
+                Tok::Kw(kw, _) if PROJECTIONS.contains(&kw) => {
+                    cam.projection = PROJECTIONS.iter().copied().find(|p| *p == kw).unwrap_or("perspective");
+                    Ok(())
+                }
                 Tok::Kw(
-                    kw @ ("location" | "look_at" | "up" | "right" | "direction" | "sky"),
+                    kw @ ("location" | "look_at" | "up" | "right" | "direction" | "sky" | "focal_point"),
                     span,
                 ) => {
                     c.once(kw, span)?;
@@ -93,9 +83,16 @@ impl Evaluator<'_> {
                     match kw {
                         "location" => cam.location = v,
                         "look_at" => cam.look_at = Some(v),
-                        "up" => cam.up = v,
-                        "right" => cam.right = v,
+                        "up" => {
+                            cam.up = v;
+                            cam.sized = true;
+                        }
+                        "right" => {
+                            cam.right = v;
+                            cam.sized = true;
+                        }
                         "direction" => cam.direction = v,
+                        "focal_point" => cam.focal_point = v,
                         _ => cam.sky = v,
                     }
                     Ok(())
@@ -104,14 +101,64 @@ impl Evaluator<'_> {
                     c.once("angle", span)?;
                     let (v, s) = c.value("the field of view in degrees")?;
                     let a = self.to_float(&v, s)?;
-                    if a <= 0.0 || a >= 180.0 {
-                        Err(Diagnostic::error(codes::OUT_OF_RANGE, s, format!("a perspective camera's angle must be between 0 and 180 degrees, found {a}"))
-                            .with_help("typical values are 30 to 90")
-                            .into())
+                    if cam.projection == "perspective" && a >= 180.0 {
+                        Err(Diagnostic::error(
+                            codes::OUT_OF_RANGE,
+                            s,
+                            format!("a perspective camera's angle must be below 180 degrees, found {a}"),
+                        )
+                        .with_help("typical values are 30 to 90; use `fisheye` or `spherical` for wider views")
+                        .into())
+                    } else if a <= 0.0 || a > 360.0 {
+                        return_range(s, format!("a camera's angle must be above 0 and at most 360 degrees, found {a}"))
                     } else {
                         cam.angle = Some(a);
+                        c.comma();
+                        if c.value_next() {
+                            let (v, s) = c.value("the vertical field of view in degrees")?;
+                            let b = self.to_float(&v, s)?;
+                            if b <= 0.0 || b > 360.0 {
+                                return_range(s, format!("a camera's vertical angle must be above 0 and at most 360 degrees, found {b}"))
+                            } else {
+                                cam.v_angle = Some(b);
+                                Ok(())
+                            }
+                        } else {
+                            Ok(())
+                        }
+                    }
+                }
+                Tok::Kw("aperture", span) => {
+                    c.once("aperture", span)?;
+                    let (v, s) = c.value("the aperture (lens diameter)")?;
+                    let a = self.to_float(&v, s)?;
+                    if a < 0.0 {
+                        return_range(s, format!("`aperture` must not be negative, found {a}"))
+                    } else {
+                        cam.aperture = a;
                         Ok(())
                     }
+                }
+                Tok::Kw("blur_samples", span) => {
+                    c.once("blur_samples", span)?;
+                    let (v, s) = c.value("the number of blur samples per pixel")?;
+                    let mut n = self.to_float(&v, s)?;
+                    c.comma();
+                    if c.value_next() {
+                        // `blur_samples MIN, MAX`: rts takes MAX samples.
+                        n = self.take_float(c, "the maximum number of blur samples")?;
+                    }
+                    if !(1.0..=4096.0).contains(&n) {
+                        return_range(s, format!("`blur_samples` must be from 1 to 4096, found {n}"))
+                    } else {
+                        cam.blur_samples = n as u32;
+                        Ok(())
+                    }
+                }
+                Tok::Kw(kw @ ("confidence" | "variance"), span) => {
+                    // POV-Ray's adaptive blur stopping rule: rts takes all blur_samples.
+                    c.once(kw, span)?;
+                    self.take_float(c, &format!("a number after `{kw}`")).map(|_| ())
                 }
                 Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => {
                     self.transform_kw(kw, span, c).map(|t| {
@@ -127,7 +174,7 @@ impl Evaluator<'_> {
                     span,
                     format!("`{kw}` cameras and options are not implemented in rts yet"),
                 )
-                .with_help("this release has the perspective camera")
+                .with_help("rts has perspective, orthographic, fisheye, ultra_wide_angle, panoramic and spherical cameras")
                 .into()),
                 other => Err(self.unexpected(c, &other, CAMERA_ITEMS)),
             };
@@ -141,7 +188,7 @@ impl Evaluator<'_> {
     /// Turns a camera as written into the vectors the renderer uses, as POV-Ray does:
     /// `angle` sets the length of `direction` from `right`; `look_at` turns the camera
     /// about `sky`, keeping the lengths and handedness of `right`, `up` and `direction`.
-    pub(crate) fn resolve_camera(&self, spec: &CameraSpec, span: Span) -> R<Camera> {
+    pub(crate) fn resolve_camera(&mut self, spec: &CameraSpec, span: Span) -> R<Camera> {
         let bad = |msg: &str, help: &str| -> Fail {
             Diagnostic::error(codes::BAD_CAMERA, span, msg.to_string())
                 .with_help(help.to_string())
@@ -158,8 +205,34 @@ impl Evaluator<'_> {
             ));
         }
         let handed = up.cross(dir).dot(right);
+        let mut ortho_angle = None;
         if let Some(angle) = spec.angle {
-            dir = dir.normalize() * (0.5 * right.length() / (angle.to_radians() / 2.0).tan());
+            match spec.projection {
+                "perspective" if angle >= 180.0 => {
+                    return Err(Diagnostic::error(
+                        codes::OUT_OF_RANGE,
+                        span,
+                        format!(
+                            "a perspective camera's angle must be below 180 degrees, found {angle}"
+                        ),
+                    )
+                    .with_help(
+                        "typical values are 30 to 90; use `fisheye` or `spherical` for wider views",
+                    )
+                    .into());
+                }
+                "perspective" => {
+                    dir =
+                        dir.normalize() * (0.5 * right.length() / (angle.to_radians() / 2.0).tan());
+                }
+                "orthographic" => ortho_angle = Some(angle),
+                _ => {}
+            }
+        } else if spec.projection == "orthographic" && !spec.sized {
+            // Measured in POV-Ray 3.7: without `angle`, `right` or `up`, an
+            // orthographic camera shows what the perspective camera
+            // of the same vectors shows at the look_at distance.
+            ortho_angle = Some(2.0 * (0.5 * right.length() / dir.length()).atan().to_degrees());
         }
         if let Some(target) = spec.look_at {
             let d = target - spec.location;
@@ -170,12 +243,27 @@ impl Evaluator<'_> {
                 ));
             }
             let d = d.normalize();
-            let r = spec.sky.cross(d);
+            let mut r = spec.sky.cross(d);
             if r.length_squared() < 1e-20 {
-                return Err(bad(
-                    "the camera looks straight along `sky`, so its roll is undefined",
-                    "give a `sky` vector that is not parallel to the view direction, e.g. `sky z`",
-                ));
+                // POV-Ray warns and keeps the written `right` (measured: the picture
+                // is the one `sky z` gives for a camera looking down).
+                let along = right - right.dot(d) * d;
+                if along.length_squared() < 1e-20 {
+                    return Err(bad(
+                        "the camera looks straight along `sky` and along `right`, so its roll is undefined",
+                        "give a `sky` vector that is not parallel to the view direction, e.g. `sky z`",
+                    ));
+                }
+                self.report(
+                    Diagnostic::warning(
+                        codes::BAD_CAMERA,
+                        span,
+                        "the camera looks straight along `sky`; its `right` vector sets the roll",
+                    )
+                    .with_help("give a `sky` vector that is not parallel to the view direction, e.g. `sky z`")
+                    .into(),
+                );
+                r = along * handed.signum();
             }
             let r = r.normalize();
             let u = d.cross(r);
@@ -184,12 +272,48 @@ impl Evaluator<'_> {
             up = u * up.length();
             dir = d * dir.length();
         }
+        if let Some(angle) = ortho_angle {
+            if angle >= 180.0 {
+                return Err(bad(
+                    "an orthographic camera's angle must be below 180 degrees",
+                    "the angle sizes the view like a perspective camera's at the look_at distance",
+                ));
+            }
+            // The view is as wide as a perspective camera's with this angle at the
+            // distance of `look_at` (or of `direction`'s length).
+            // POV-Ray's look_at defaults to <0, 0, 1> for this (measured).
+            let dist = (spec.look_at.unwrap_or(DVec3::Z) - spec.location).length();
+            let width = 2.0 * dist * (angle.to_radians() / 2.0).tan();
+            let k = width / right.length();
+            right *= k;
+            up *= k;
+        }
+        let h = spec.angle.unwrap_or(180.0);
+        let kind = match spec.projection {
+            "orthographic" => CameraKind::Orthographic,
+            "fisheye" => CameraKind::Fisheye { angle: h },
+            "ultra_wide_angle" => CameraKind::UltraWideAngle {
+                angle: spec.angle.unwrap_or(90.0),
+            },
+            "panoramic" => CameraKind::Panoramic,
+            "spherical" => {
+                let h = spec.angle.unwrap_or(360.0);
+                CameraKind::Spherical {
+                    h_angle: h,
+                    v_angle: spec.v_angle.unwrap_or(h / 2.0),
+                }
+            }
+            _ => CameraKind::Perspective,
+        };
         let mut cam = Camera {
-            kind: CameraKind::Perspective,
+            kind,
             location: spec.location,
             direction: dir,
             right,
             up,
+            aperture: spec.aperture,
+            focal_distance: 1.0,
+            blur_samples: spec.blur_samples,
             span,
         };
         if let Some(t) = spec.transform {
@@ -198,84 +322,14 @@ impl Evaluator<'_> {
             cam.right = t.vector(cam.right);
             cam.up = t.vector(cam.up);
         }
-        Ok(cam)
-    }
-
-    /// `light_source { LOCATION, COLOUR [parallel point_at P] [shadowless] }`.
-    pub(crate) fn light(&mut self, c: &mut Cursor) -> R<Light> {
-        let location = self.take_vec3(c, "the light's location")?;
-        c.comma();
-        let colour = if c.value_next() {
-            self.take_colour(c, "the light's colour")?.rgb
+        // The plane in focus passes through `focal_point`, across the view direction.
+        let fd = (spec.focal_point - cam.location).dot(cam.direction.normalize());
+        cam.focal_distance = if fd > 1e-9 {
+            fd
         } else {
-            return Err(Diagnostic::error(
-                codes::MISSING_VALUE,
-                c.span,
-                "a light source needs a colour",
-            )
-            .with_help("write `light_source { <x, y, z> color rgb <1, 1, 1> }`")
-            .into());
+            cam.direction.length()
         };
-        let mut light = Light {
-            location,
-            colour,
-            kind: LightKind::Point,
-            shadowless: false,
-            span: c.span,
-        };
-        let mut point_at = DVec3::ZERO;
-        let mut parallel = false;
-        while let Some(tok) = c.next() {
-            let r: R<()> = match tok {
-                Tok::Kw("parallel", span) => c.once("parallel", span).map(|_| parallel = true),
-                Tok::Kw("point_at", span) => {
-                    c.once("point_at", span)?;
-                    self.take_vec3(c, "the point the light aims at")
-                        .map(|p| point_at = p)
-                }
-                Tok::Kw("shadowless", _) => {
-                    light.shadowless = true;
-                    Ok(())
-                }
-                Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => {
-                    self.transform_kw(kw, span, c).map(|t| {
-                        light.location = t.point(light.location);
-                        point_at = t.point(point_at);
-                    })
-                }
-                Tok::Block(_, Value::Transform(t), _) => {
-                    light.location = t.point(light.location);
-                    point_at = t.point(point_at);
-                    Ok(())
-                }
-                Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_LIGHT.contains(&kw) => {
-                    Err(Diagnostic::error(
-                        codes::UNSUPPORTED,
-                        span,
-                        format!("`{kw}` is not implemented in rts yet"),
-                    )
-                    .with_help("this release has point and parallel lights")
-                    .into())
-                }
-                other => Err(self.unexpected(c, &other, LIGHT_ITEMS)),
-            };
-            if let Err(f) = r {
-                self.report(f);
-            }
-        }
-        if parallel {
-            if (light.location - point_at).length_squared() == 0.0 {
-                return Err(Diagnostic::error(
-                    codes::BAD_CAMERA,
-                    c.span,
-                    "a parallel light's location equals its point_at",
-                )
-                .with_help("the light shines from location towards point_at: make them differ")
-                .into());
-            }
-            light.kind = LightKind::Parallel { point_at };
-        }
-        Ok(light)
+        Ok(cam)
     }
 
     /// `global_settings { ambient_light assumed_gamma max_trace_level adc_bailout }`.

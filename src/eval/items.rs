@@ -95,7 +95,10 @@ impl Evaluator<'_> {
                 self.scene.objects.push(o);
                 return;
             }
-            Tok::Block(_, Value::Light(l), _) => {
+            Tok::Block(_, Value::Light(l), span) => {
+                if let Some(o) = &l.looks_like {
+                    self.place(Tok::Block("object", Value::Object(o.clone()), span));
+                }
                 self.scene.lights.push((*l).clone());
                 return;
             }

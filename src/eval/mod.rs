@@ -5,6 +5,7 @@
 //! failing statement is reported and evaluation goes on with the next one, and values
 //! whose evaluation failed are [`Value::Poison`] so they do not cause further reports.
 
+mod atmosphere;
 mod blocks;
 mod builtins;
 mod camera;
@@ -13,6 +14,7 @@ mod directives;
 mod exprs;
 mod include;
 mod items;
+mod lights;
 mod materials;
 mod objects;
 mod scope;

@@ -70,6 +70,19 @@ pub struct CameraSpec {
     pub angle: Option<f64>,
     /// Transforms applied after the vectors.
     pub transform: Option<Transform>,
+    /// The projection keyword (`perspective`, `orthographic`, `fisheye`, …).
+    pub projection: &'static str,
+    /// Second value of `angle H, V` (spherical cameras).
+    pub v_angle: Option<f64>,
+    /// `aperture` (0 = pinhole).
+    pub aperture: f64,
+    /// `focal_point`.
+    pub focal_point: DVec3,
+    /// `blur_samples` (the larger value of `blur_samples MIN, MAX`).
+    pub blur_samples: u32,
+    /// Whether `right` or `up` was written (an orthographic camera then keeps their
+    /// sizes).
+    pub sized: bool,
 }
 
 impl Default for CameraSpec {
@@ -83,6 +96,12 @@ impl Default for CameraSpec {
             look_at: None,
             angle: None,
             transform: None,
+            projection: "perspective",
+            v_angle: None,
+            aperture: 0.0,
+            focal_point: DVec3::ZERO,
+            blur_samples: 1,
+            sized: false,
         }
     }
 }

@@ -1,17 +1,19 @@
-//! Primary rays.
+//! Primary rays for every camera type.
 
 use super::Sampler;
 use crate::build::Ray;
-use crate::scene::Camera;
+use crate::scene::{Camera, CameraKind};
 use glam::DVec3;
 
 /// The ray through image point (`x`, `y`) in pixel units of a `width`×`height`
 /// image: (0, 0) is the top-left corner of the top-left pixel, so the centre of pixel
-/// (i, j) is (i + 0.5, j + 0.5). The direction is
-/// `direction + (u - 0.5) right + (0.5 - v) up` with `u = x / width`,
-/// `v = y / height`, normalised. `sampler` supplies the values a camera needs
-/// beyond the image point (none for a pinhole perspective camera). `None` when the
-/// point is outside the camera's image (not possible for a perspective camera).
+/// (i, j) is (i + 0.5, j + 0.5). With screen coordinates `sx = x / width - 0.5`,
+/// `sy = 0.5 - y / height` the perspective direction is
+/// `direction + sx right + sy up`, normalised; see [`CameraKind`] for the others.
+///
+/// A camera with an `aperture` takes its point on the lens from `sampler` (two
+/// values) and aims at the point of the pinhole ray on the focal plane. `None` when
+/// the point is outside the camera's image (outside a fisheye's circle).
 pub fn primary_ray(
     camera: &Camera,
     x: f64,
@@ -20,9 +22,172 @@ pub fn primary_ray(
     height: u32,
     sampler: &mut Sampler,
 ) -> Option<Ray> {
-    let _ = sampler;
-    let u = x / f64::from(width);
-    let v = y / f64::from(height);
-    let dir: DVec3 = camera.direction + (u - 0.5) * camera.right + (0.5 - v) * camera.up;
-    Some(Ray::new(camera.location, dir.normalize()))
+    let sx = x / f64::from(width) - 0.5;
+    let sy = 0.5 - y / f64::from(height);
+    let (origin, dir) = pinhole(camera, sx, sy)?;
+    let dir = dir.normalize();
+    if camera.aperture <= 0.0 || camera.kind == CameraKind::Orthographic {
+        return Some(Ray::new(origin, dir));
+    }
+    let axis = camera.direction.normalize();
+    let along = dir.dot(axis);
+    if along <= 1e-9 {
+        return Some(Ray::new(origin, dir));
+    }
+    let focus = origin + dir * (camera.focal_distance / along);
+    let (a, b) = sampler.next_2d();
+    let (lx, ly) = disc(a, b);
+    // Lens radius aperture / 4: measured against POV-Ray 3.7 (255 blur samples),
+    // this gives the same width of blur; aperture / 2 blurs twice as much.
+    let lens = 0.25
+        * camera.aperture
+        * (lx * camera.right.normalize_or_zero() + ly * camera.up.normalize_or_zero());
+    let o = origin + lens;
+    Some(Ray::new(o, (focus - o).normalize()))
+}
+
+/// Origin and (unnormalised) direction of the pinhole ray at screen point (sx, sy).
+fn pinhole(camera: &Camera, sx: f64, sy: f64) -> Option<(DVec3, DVec3)> {
+    let (loc, d, r, u) = (camera.location, camera.direction, camera.right, camera.up);
+    let (dn, rn, un) = (d.normalize(), r.normalize(), u.normalize());
+    let aspect = r.length() / u.length();
+    Some(match camera.kind {
+        CameraKind::Perspective => (loc, d + sx * r + sy * u),
+        CameraKind::Orthographic => (loc + sx * r + sy * u, d),
+        CameraKind::Fisheye { angle } => {
+            let (mut x0, mut y0) = (2.0 * sx, 2.0 * sy);
+            if aspect > 1.0 {
+                x0 *= aspect;
+            } else {
+                y0 /= aspect;
+            }
+            let rad = (x0 * x0 + y0 * y0).sqrt();
+            if rad > 1.0 {
+                return None;
+            }
+            let phi = y0.atan2(x0);
+            let theta = rad * angle.to_radians() / 2.0;
+            let (st, ct) = theta.sin_cos();
+            (loc, st * phi.cos() * rn + st * phi.sin() * un + ct * dn)
+        }
+        CameraKind::UltraWideAngle { angle } => {
+            let half = angle.to_radians() / 2.0;
+            let lon = 2.0 * sx * half;
+            let lat = 2.0 * sy * half / aspect;
+            (
+                loc,
+                lon.sin() * rn + lat.sin() * un + lon.cos() * lat.cos() * dn,
+            )
+        }
+        CameraKind::Panoramic => {
+            let (a, b) = (std::f64::consts::PI * sx, std::f64::consts::PI * sy);
+            if b.abs() >= std::f64::consts::FRAC_PI_2 - 1e-12 {
+                (loc, un * b.signum())
+            } else {
+                (loc, a.sin() * r + b.tan() * u + a.cos() * d)
+            }
+        }
+        CameraKind::Spherical { h_angle, v_angle } => {
+            let lon = sx * h_angle.to_radians();
+            let lat = sy * v_angle.to_radians();
+            let (sl, cl) = lon.sin_cos();
+            let (sb, cb) = lat.sin_cos();
+            (loc, cb * sl * rn + sb * un + cb * cl * dn)
+        }
+    })
+}
+
+/// Maps the unit square onto the unit disc (concentric mapping).
+fn disc(a: f64, b: f64) -> (f64, f64) {
+    let (x, y) = (2.0 * a - 1.0, 2.0 * b - 1.0);
+    if x == 0.0 && y == 0.0 {
+        return (0.0, 0.0);
+    }
+    let q = std::f64::consts::FRAC_PI_4;
+    let (r, phi) = if x.abs() > y.abs() {
+        (x, q * (y / x))
+    } else {
+        (y, 2.0 * q - q * (x / y))
+    };
+    (r * phi.cos(), r * phi.sin())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cam(kind: CameraKind) -> Camera {
+        Camera {
+            kind,
+            right: DVec3::X,
+            ..Camera::default()
+        }
+    }
+
+    fn ray(c: &Camera, x: f64, y: f64) -> Option<Ray> {
+        primary_ray(c, x, y, 100, 100, &mut Sampler::new(0, 0, 0, 0, 0))
+    }
+
+    #[test]
+    fn orthographic_rays_are_parallel_from_the_image_plane() {
+        let c = Camera {
+            right: DVec3::X * 4.0,
+            up: DVec3::Y * 3.0,
+            ..cam(CameraKind::Orthographic)
+        };
+        let r = primary_ray(&c, 0.0, 0.0, 40, 30, &mut Sampler::new(0, 0, 0, 0, 0)).unwrap();
+        assert!((r.origin - DVec3::new(-2.0, 1.5, 0.0)).length() < 1e-12);
+        assert!((r.dir - DVec3::Z).length() < 1e-12);
+        let r = primary_ray(&c, 40.0, 30.0, 40, 30, &mut Sampler::new(0, 0, 0, 0, 0)).unwrap();
+        assert!((r.origin - DVec3::new(2.0, -1.5, 0.0)).length() < 1e-12);
+    }
+
+    #[test]
+    fn fisheye_angle_grows_linearly_from_the_centre() {
+        let c = cam(CameraKind::Fisheye { angle: 180.0 });
+        let centre = ray(&c, 50.0, 50.0).unwrap();
+        assert!((centre.dir - DVec3::Z).length() < 1e-12);
+        // Right edge of the circle: 90° off the axis, pointing along +x.
+        let edge = ray(&c, 100.0, 50.0).unwrap();
+        assert!((edge.dir - DVec3::X).length() < 1e-9);
+        // Halfway: 45°.
+        let half = ray(&c, 75.0, 50.0).unwrap();
+        assert!((half.dir.dot(DVec3::Z) - 45f64.to_radians().cos()).abs() < 1e-12);
+        // Top: +y.
+        let top = ray(&c, 50.0, 0.0).unwrap();
+        assert!((top.dir - DVec3::Y).length() < 1e-9);
+        assert!(ray(&c, 0.0, 0.0).is_none());
+    }
+
+    #[test]
+    fn spherical_maps_longitude_and_latitude_linearly() {
+        let c = cam(CameraKind::Spherical {
+            h_angle: 360.0,
+            v_angle: 180.0,
+        });
+        let r = ray(&c, 75.0, 50.0).unwrap();
+        assert!((r.dir - DVec3::X).length() < 1e-9);
+        let r = ray(&c, 0.0, 50.0).unwrap();
+        assert!((r.dir + DVec3::Z).length() < 1e-9);
+        let r = ray(&c, 50.0, 0.0).unwrap();
+        assert!((r.dir - DVec3::Y).length() < 1e-9);
+    }
+
+    #[test]
+    fn depth_of_field_keeps_the_focal_plane_sharp() {
+        let c = Camera {
+            aperture: 0.5,
+            focal_distance: 4.0,
+            ..cam(CameraKind::Perspective)
+        };
+        let pin = ray(&c, 30.0, 60.0).unwrap();
+        let focus = pin.origin + pin.dir * (4.0 / pin.dir.z);
+        for i in 0..16 {
+            let r =
+                primary_ray(&c, 30.0, 60.0, 100, 100, &mut Sampler::new(0, 0, 1, 2, i)).unwrap();
+            let t = (focus.z - r.origin.z) / r.dir.z;
+            assert!((r.origin + r.dir * t - focus).length() < 1e-9);
+            assert!(r.origin.z == 0.0 && r.origin.length() <= 0.125 + 1e-12);
+        }
+    }
 }

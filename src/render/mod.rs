@@ -7,6 +7,7 @@
 //! progress.
 
 mod aa;
+mod atmosphere;
 mod camera;
 mod film;
 mod lights;
@@ -17,9 +18,10 @@ mod shade;
 mod stats;
 
 pub use aa::{Antialias, Sampling};
+pub use atmosphere::{apply_fog, sky};
 pub use camera::primary_ray;
 pub use film::Film;
-pub use lights::{incident, Incident};
+pub use lights::{cylinder_attenuation, fade, incident, shadow, spot_attenuation, Incident};
 pub use passes::Pass;
 pub use pigment::{checker_index, evaluate as evaluate_pigment, CHECKER_OFFSET};
 pub use sampler::Sampler;
@@ -273,8 +275,12 @@ pub fn render_with(
 /// gains `blur_samples` and `aperture`, this becomes
 /// `if c.aperture > 0.0 { c.blur_samples.max(1) } else { 1 }`.
 fn dof_samples(world: &World) -> u32 {
-    let _ = &world.camera;
-    1
+    let c = &world.camera;
+    if c.aperture > 0.0 {
+        c.blur_samples.max(1)
+    } else {
+        1
+    }
 }
 
 /// What every sample of one render shares.

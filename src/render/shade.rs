@@ -1,6 +1,7 @@
 //! POV-Ray 3.7's classic shading model: ambient, diffuse, Phong and Blinn
 //! highlights, hard shadows and mirror reflection.
 
+use super::atmosphere;
 use super::lights;
 use super::pigment;
 use super::sampler::Sampler;
@@ -70,13 +71,14 @@ pub fn trace(
     weight: f64,
     ctx: &mut TraceCtx,
 ) -> DVec3 {
-    match world.intersect(ray, t_min, f64::INFINITY, kind) {
-        None => world.background,
+    let (colour, depth) = match world.intersect(ray, t_min, f64::INFINITY, kind) {
+        None => (atmosphere::sky(world, ray.dir), atmosphere::MISS_DISTANCE),
         Some(hit) => {
             let surface = world.surface(ray, &hit);
-            shade(world, &surface, ray, level, weight, ctx)
+            (shade(world, &surface, ray, level, weight, ctx), hit.t)
         }
-    }
+    };
+    atmosphere::apply_fog(&world.atmosphere, ray, depth, colour)
 }
 
 /// Colour of `prim` at world point `p`, seen along `ray`.

@@ -1,19 +1,47 @@
-//! The camera, resolved to the vectors POV-Ray's perspective camera uses.
+//! The camera, resolved to the vectors POV-Ray's cameras use.
 
 use crate::span::Span;
 use glam::DVec3;
 
-/// Camera projections.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+/// Camera projections. Screen coordinates (sx, sy) run over [-0.5, 0.5]² (sy up).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub enum CameraKind {
-    /// `perspective` (the default).
+    /// `perspective` (the default): direction `direction + sx right + sy up`.
     #[default]
     Perspective,
+    /// `orthographic`: parallel rays along `direction` from
+    /// `location + sx right + sy up`.
+    Orthographic,
+    /// `fisheye`: the angle from `direction` grows linearly with the distance from
+    /// the image centre, reaching `angle / 2` at the edge of the inscribed circle;
+    /// nothing is seen outside it.
+    Fisheye {
+        /// Full field of view in degrees (default 180).
+        angle: f64,
+    },
+    /// `ultra_wide_angle`: with longitude `2 sx · angle/2` and latitude
+    /// `2 sy · angle/2 · |up|/|right|`, the direction
+    /// `sin(lon) right + sin(lat) up + cos(lon) cos(lat) direction` (unit vectors).
+    UltraWideAngle {
+        /// Horizontal field of view in degrees (default 90).
+        angle: f64,
+    },
+    /// `panoramic`: with `a = π sx` and `b = π sy`, the direction
+    /// `sin(a) right + tan(b) up + cos(a) direction` (the vectors as they are, not
+    /// normalised; measured against POV-Ray 3.7, which ignores `angle` for it).
+    Panoramic,
+    /// `spherical`: longitude and latitude mapped linearly onto the image.
+    Spherical {
+        /// Horizontal field of view in degrees (default 360).
+        h_angle: f64,
+        /// Vertical field of view in degrees (default half the horizontal).
+        v_angle: f64,
+    },
 }
 
 /// A camera after `look_at`, `angle` and `sky` have been applied, as POV-Ray does:
-/// the primary ray through screen point (sx, sy) in [-0.5, 0.5]² (sy up) has direction
-/// `direction + sx * right + sy * up`.
+/// for a perspective camera the primary ray through screen point (sx, sy) in
+/// [-0.5, 0.5]² (sy up) has direction `direction + sx * right + sy * up`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera {
     /// The projection.
@@ -26,6 +54,15 @@ pub struct Camera {
     pub right: DVec3,
     /// Full image-plane vector from bottom edge to top edge.
     pub up: DVec3,
+    /// `aperture`: size of the lens for depth of field (0 = pinhole); the lens radius
+    /// is aperture / 4, which blurs as much as POV-Ray 3.7.
+    pub aperture: f64,
+    /// Distance from `location` (along `direction`) of the plane in focus, from
+    /// `focal_point`.
+    pub focal_distance: f64,
+    /// `blur_samples`: how many samples per pixel a depth-of-field camera wants (the
+    /// render loop takes at least this many when `aperture > 0`).
+    pub blur_samples: u32,
     /// Where the camera was written (default span for the default camera).
     pub span: Span,
 }
@@ -39,6 +76,9 @@ impl Default for Camera {
             direction: DVec3::Z,
             right: DVec3::new(1.33, 0.0, 0.0),
             up: DVec3::Y,
+            aperture: 0.0,
+            focal_distance: 1.0,
+            blur_samples: 1,
             span: Span::default(),
         }
     }

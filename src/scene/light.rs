@@ -1,10 +1,12 @@
 //! Light sources.
 
+use super::Object;
 use crate::span::Span;
 use glam::DVec3;
+use std::sync::Arc;
 
-/// `light_source { LOCATION, COLOUR [parallel point_at P] }`.
-#[derive(Clone, Debug, PartialEq)]
+/// `light_source { LOCATION, COLOUR … }`.
+#[derive(Clone, Debug)]
 pub struct Light {
     /// Position in world space.
     pub location: DVec3,
@@ -12,21 +14,100 @@ pub struct Light {
     pub colour: DVec3,
     /// What kind of light this is.
     pub kind: LightKind,
+    /// `parallel`: light arrives everywhere from the direction `location - point_at`;
+    /// only objects in front of the plane through `location` cast shadows.
+    pub parallel: bool,
+    /// `point_at` (default origin): where spotlights, cylinder and parallel lights aim.
+    pub point_at: DVec3,
     /// `shadowless`: this light casts no shadows.
     pub shadowless: bool,
+    /// `fade_distance` (0 = no fading).
+    pub fade_distance: f64,
+    /// `fade_power` (0 = no fading).
+    pub fade_power: f64,
+    /// `area_light …`: soft shadows from a grid of lights.
+    pub area: Option<AreaLight>,
+    /// `looks_like { OBJECT }`: the object, already placed at the light; the evaluator
+    /// adds it to the scene with `no_shadow`.
+    pub looks_like: Option<Arc<Object>>,
     /// Where the light was written.
     pub span: Span,
 }
 
-/// The kinds of light source.
-#[derive(Clone, Debug, PartialEq)]
+impl Default for Light {
+    /// A white point light at the origin.
+    fn default() -> Self {
+        Light {
+            location: DVec3::ZERO,
+            colour: DVec3::ONE,
+            kind: LightKind::Point,
+            parallel: false,
+            point_at: DVec3::ZERO,
+            shadowless: false,
+            fade_distance: 0.0,
+            fade_power: 0.0,
+            area: None,
+            looks_like: None,
+            span: Span::default(),
+        }
+    }
+}
+
+/// The kinds of light source (the cone or cylinder that limits them).
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum LightKind {
-    /// An omnidirectional point light.
+    /// An omnidirectional point light (or a `parallel` light).
     Point,
-    /// `parallel`: light arrives everywhere from the direction `location - point_at`;
-    /// only objects in front of the plane through `location` cast shadows.
-    Parallel {
-        /// The point the light shines at (`point_at`, default origin).
-        point_at: DVec3,
-    },
+    /// `spotlight`: a cone from `location` towards `point_at`.
+    Spot(Beam),
+    /// `cylinder`: a cylinder along `location → point_at`; radii in scene units.
+    Cylinder(Beam),
+}
+
+/// The shape of a spotlight's cone or a cylinder light's beam.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Beam {
+    /// `radius`: full intensity inside (degrees for spotlights, units for cylinders).
+    pub radius: f64,
+    /// `falloff`: no light outside (same units as `radius`).
+    pub falloff: f64,
+    /// `tightness`: extra exponent softening the beam.
+    pub tightness: f64,
+}
+
+impl Beam {
+    /// POV-Ray 3.7's spotlight defaults: `radius 30 falloff 45 tightness 0`.
+    pub const SPOT: Beam = Beam {
+        radius: 30.0,
+        falloff: 45.0,
+        tightness: 0.0,
+    };
+    /// POV-Ray 3.7's cylinder light defaults: `radius 0.75 falloff 1 tightness 0`.
+    pub const CYLINDER: Beam = Beam {
+        radius: 0.75,
+        falloff: 1.0,
+        tightness: 0.0,
+    };
+}
+
+/// `area_light AXIS1, AXIS2, N1, N2 [jitter] [adaptive A] [circular] [orient]`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AreaLight {
+    /// First axis: the full extent of the grid along it.
+    pub axis1: DVec3,
+    /// Second axis.
+    pub axis2: DVec3,
+    /// Lights along `axis1` (≥ 1).
+    pub size1: u32,
+    /// Lights along `axis2` (≥ 1).
+    pub size2: u32,
+    /// `jitter`: each light moves randomly within its cell, per sample.
+    pub jitter: bool,
+    /// `adaptive A`: test grid corners first, subdividing where they differ; forced
+    /// subdivision for the first A levels. `None` tests every light.
+    pub adaptive: Option<u32>,
+    /// `circular`: the grid is mapped onto a disc (an ellipse for unequal axes).
+    pub circular: bool,
+    /// `orient`: the axes turn to face each lit point.
+    pub orient: bool,
 }

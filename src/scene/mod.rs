@@ -5,14 +5,16 @@
 //! The types are closed enums so new shapes, patterns and lights are added as variants
 //! without reshaping what exists.
 
+mod atmosphere;
 mod camera;
 mod light;
 mod material;
 mod object;
 mod transform;
 
+pub use atmosphere::{Atmosphere, Fog, FogKind, SkySphere};
 pub use camera::{Camera, CameraKind};
-pub use light::{Light, LightKind};
+pub use light::{AreaLight, Beam, Light, LightKind};
 pub use material::{Colour, Finish, Interior, Pattern, Pigment, Reflection, Texture};
 pub use object::{Object, ObjectFlags, Shape};
 pub use transform::Transform;
@@ -32,6 +34,8 @@ pub struct Scene {
     pub background: Colour,
     /// `global_settings { … }`.
     pub global: GlobalSettings,
+    /// `sky_sphere` and `fog`.
+    pub atmosphere: Atmosphere,
 }
 
 impl Default for Scene {
@@ -42,6 +46,7 @@ impl Default for Scene {
             objects: Vec::new(),
             background: Colour::BLACK,
             global: GlobalSettings::default(),
+            atmosphere: Atmosphere::default(),
         }
     }
 }

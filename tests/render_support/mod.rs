@@ -3,8 +3,7 @@
 
 use glam::DVec3;
 use rts::scene::{
-    Camera, Colour, Finish, Light, LightKind, Object, Pattern, Pigment, Scene, Shape, Texture,
-    Transform,
+    Camera, Colour, Finish, Light, Object, Pattern, Pigment, Scene, Shape, Texture, Transform,
 };
 use rts::span::Span;
 use std::sync::Arc;
@@ -82,9 +81,7 @@ pub fn point_light(location: DVec3) -> Light {
     Light {
         location,
         colour: DVec3::ONE,
-        kind: LightKind::Point,
-        shadowless: false,
-        span: Span::default(),
+        ..Light::default()
     }
 }
 

@@ -1,0 +1,211 @@
+//! `sky_sphere { … }`, `fog { … }` and `looks_like { … }`.
+
+use super::cursor::{Cursor, Tok};
+use super::objects::TRANSFORMS;
+use super::value::Value;
+use super::{Evaluator, R};
+use crate::diag::{codes, Diagnostic};
+use crate::scene::{Fog, FogKind, Object, SkySphere, Transform};
+use glam::DVec3;
+
+const SKY_ITEMS: &[&str] = &[
+    "pigment",
+    "translate",
+    "rotate",
+    "scale",
+    "matrix",
+    "transform",
+];
+const FOG_ITEMS: &[&str] = &[
+    "fog_type",
+    "distance",
+    "color",
+    "fog_offset",
+    "fog_alt",
+    "up",
+];
+const LATER_FOG: &[&str] = &["turbulence", "turb_depth", "omega", "lambda", "octaves"];
+
+impl Evaluator<'_> {
+    /// `sky_sphere { pigment { … } … transforms }`: sets the scene's sky sphere.
+    pub(crate) fn sky_sphere(&mut self, c: &mut Cursor) -> R<()> {
+        let mut sky = SkySphere {
+            pigments: Vec::new(),
+            transform: None,
+        };
+        while let Some(tok) = c.next() {
+            let r: R<()> = match tok {
+                Tok::Block(_, Value::Pigment(p), _) => {
+                    sky.pigments.push((*p).clone());
+                    Ok(())
+                }
+                Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => {
+                    self.transform_kw(kw, span, c).map(|t| {
+                        sky.transform = Some(sky.transform.unwrap_or(Transform::IDENTITY).then(&t));
+                    })
+                }
+                Tok::Block(_, Value::Transform(t), _) => {
+                    sky.transform = Some(sky.transform.unwrap_or(Transform::IDENTITY).then(&t));
+                    Ok(())
+                }
+                other => Err(self.unexpected(c, &other, SKY_ITEMS)),
+            };
+            if let Err(f) = r {
+                self.report(f);
+            }
+        }
+        if sky.pigments.is_empty() {
+            return Err(Diagnostic::error(
+                codes::MISSING_VALUE,
+                c.span,
+                "a sky_sphere needs at least one pigment",
+            )
+            .with_help("write `sky_sphere { pigment { gradient y color_map { … } } }`")
+            .into());
+        }
+        self.scene.atmosphere.sky_sphere = Some(sky);
+        Ok(())
+    }
+
+    /// `fog { [fog_type 1|2] distance D COLOUR [fog_offset O fog_alt A up V] }`: adds a
+    /// fog to the scene.
+    pub(crate) fn fog(&mut self, c: &mut Cursor) -> R<()> {
+        let mut ty = 1.0;
+        let mut distance = None;
+        let mut colour = None;
+        let (mut offset, mut alt, mut up) = (0.0, 1.0, DVec3::Y);
+        while let Some(tok) = c.next() {
+            let r: R<()> = match tok {
+                Tok::Val(Value::Colour(_), _) => {
+                    self.take_colour_from(tok).map(|col| colour = Some(col))
+                }
+                Tok::Kw("fog_type", span) => {
+                    c.once("fog_type", span)?;
+                    let (v, s) = c.value("the fog type (1 constant, 2 ground)")?;
+                    let t = self.to_float(&v, s)?;
+                    if t != 1.0 && t != 2.0 {
+                        Err(Diagnostic::error(
+                            codes::OUT_OF_RANGE,
+                            s,
+                            format!("`fog_type` is 1 (constant) or 2 (ground fog), found {t}"),
+                        )
+                        .into())
+                    } else {
+                        ty = t;
+                        Ok(())
+                    }
+                }
+                Tok::Kw(kw @ ("distance" | "fog_alt"), span) => {
+                    c.once(kw, span)?;
+                    let (v, s) = c.value(&format!("a positive number after `{kw}`"))?;
+                    let d = self.to_float(&v, s)?;
+                    if d <= 0.0 {
+                        Err(Diagnostic::error(
+                            codes::OUT_OF_RANGE,
+                            s,
+                            format!("`{kw}` must be positive, found {d}"),
+                        )
+                        .with_help("the fog's distance is where it hides about two thirds of what is behind it")
+                        .into())
+                    } else {
+                        if kw == "distance" {
+                            distance = Some(d);
+                        } else {
+                            alt = d;
+                        }
+                        Ok(())
+                    }
+                }
+                Tok::Kw("fog_offset", span) => {
+                    c.once("fog_offset", span)?;
+                    self.take_float(c, "the height of the fog's top")
+                        .map(|v| offset = v)
+                }
+                Tok::Kw("up", span) => {
+                    c.once("up", span)?;
+                    let (v, s) = c.value("the fog's up direction")?;
+                    let u = self.to_vec3(&v, s)?;
+                    if u.length_squared() == 0.0 {
+                        Err(Diagnostic::error(
+                            codes::OUT_OF_RANGE,
+                            s,
+                            "the fog's `up` must not be zero",
+                        )
+                        .with_help("use `up y`")
+                        .into())
+                    } else {
+                        up = u.normalize();
+                        Ok(())
+                    }
+                }
+                Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_FOG.contains(&kw) => {
+                    Err(Diagnostic::error(
+                        codes::UNSUPPORTED,
+                        span,
+                        format!("fog `{kw}` is not implemented in rts yet"),
+                    )
+                    .with_help("remove it for an even fog")
+                    .into())
+                }
+                other => Err(self.unexpected(c, &other, FOG_ITEMS)),
+            };
+            if let Err(f) = r {
+                self.report(f);
+            }
+        }
+        let Some(distance) = distance else {
+            return Err(Diagnostic::error(
+                codes::MISSING_VALUE,
+                c.span,
+                "a fog needs a `distance`",
+            )
+            .with_help("write `fog { distance 10 color rgb 0.7 }`")
+            .into());
+        };
+        let kind = if ty == 2.0 {
+            FogKind::Ground { offset, alt, up }
+        } else {
+            FogKind::Constant
+        };
+        self.scene.atmosphere.fogs.push(Fog {
+            kind,
+            distance,
+            colour: colour.unwrap_or(crate::scene::Colour::BLACK),
+        });
+        Ok(())
+    }
+
+    /// `looks_like { OBJECT }`: the object.
+    pub(crate) fn looks_like(&mut self, c: &mut Cursor) -> R<Object> {
+        let obj = match c.next() {
+            Some(Tok::Block(_, Value::Object(o), _) | Tok::Val(Value::Object(o), _)) => {
+                (*o).clone()
+            }
+            Some(Tok::Block(_, Value::Poison, _) | Tok::Val(Value::Poison, _)) => {
+                return Err(super::Fail::silent())
+            }
+            Some(other) => return Err(self.unexpected(c, &other, &["an object"])),
+            None => {
+                return Err(Diagnostic::error(
+                    codes::MISSING_VALUE,
+                    c.span,
+                    "`looks_like` needs an object",
+                )
+                .with_help("write `looks_like { sphere { 0, 0.2 pigment { rgb 1 } } }`")
+                .into())
+            }
+        };
+        if let Some(t) = c.next() {
+            return Err(self.unexpected(c, &t, &["one object"]));
+        }
+        Ok(obj)
+    }
+
+    /// A colour value already taken from the cursor.
+    fn take_colour_from(&mut self, tok: Tok) -> R<crate::scene::Colour> {
+        match tok {
+            Tok::Val(v, s) => self.to_colour(&v, s),
+            _ => Err(super::Fail::silent()),
+        }
+    }
+}

@@ -1,0 +1,174 @@
+//! What a ray meets besides objects: the sky sphere behind everything and fog
+//! along the way, as POV-Ray 3.7 defines them.
+
+use super::pigment;
+use crate::build::{Ray, World};
+use crate::scene::{Atmosphere, Fog, FogKind};
+use glam::DVec3;
+
+/// Distance a ray that hits nothing is taken to travel through fog.
+pub const MISS_DISTANCE: f64 = 1e30;
+
+/// The colour of a ray that hits nothing: the background, under the sky sphere's
+/// pigments (evaluated at the unit direction, in the sky sphere's own space; each
+/// layer lets through what lies below in proportion to its filter and transmit).
+pub fn sky(world: &World, dir: DVec3) -> DVec3 {
+    let mut out = world.background;
+    if let Some(sky) = &world.atmosphere.sky_sphere {
+        let mut d = dir.normalize();
+        if let Some(t) = &sky.transform {
+            d = t.inverse.transform_vector3(d).normalize();
+        }
+        for pig in &sky.pigments {
+            let c = pigment::evaluate(pig, d);
+            out = c.rgb * (1.0 - c.filter - c.transmit) + out * (c.transmit + c.filter * c.rgb);
+        }
+    }
+    out
+}
+
+/// `colour` seen along `ray` at distance `depth` (in units of `|ray.dir|`), through
+/// every fog of `atmosphere`. As measured in POV-Ray 3.7, several fogs do not lie
+/// over one another: what is behind is dimmed by all of them and their colours
+/// add up (so two fogs can be brighter than either).
+pub fn apply_fog(atmosphere: &Atmosphere, ray: &Ray, depth: f64, colour: DVec3) -> DVec3 {
+    if atmosphere.fogs.is_empty() {
+        return colour;
+    }
+    let len = ray.dir.length();
+    let (dir, dist) = (ray.dir / len, depth * len);
+    let mut through = colour;
+    let mut added = DVec3::ZERO;
+    for fog in &atmosphere.fogs {
+        let k = transmittance(fog, ray.origin, dir, dist);
+        let (pass, own) = blend(fog, k);
+        through *= pass;
+        added += own;
+    }
+    through + added
+}
+
+/// How much of what lies `dist` away along unit `dir` from `origin` shows through
+/// `fog`: `exp(-D / distance)`, D the distance weighted by the fog's density.
+pub fn transmittance(fog: &Fog, origin: DVec3, dir: DVec3, dist: f64) -> f64 {
+    let depth = match fog.kind {
+        FogKind::Constant => dist,
+        FogKind::Ground { offset, alt, up } => {
+            let h0 = origin.dot(up);
+            let dh = dir.dot(up);
+            if dh.abs() < 1e-12 {
+                dist * ground_density(h0, offset, alt)
+            } else {
+                let h1 = h0 + dist * dh;
+                (ground_integral(h1, offset, alt) - ground_integral(h0, offset, alt)) / dh
+            }
+        }
+    };
+    if !depth.is_finite() {
+        return 0.0;
+    }
+    (-depth / fog.distance).exp()
+}
+
+/// A fog with transmittance `k` passes `pass` times the colour behind it and adds
+/// `own`. Measured in POV-Ray 3.7: the fog's `transmit` is the least transmittance,
+/// `w = max(k, transmit)`; `pass = w (1 - filter + filter colour)` and
+/// `own = (1 - w) colour`.
+fn blend(fog: &Fog, k: f64) -> (DVec3, DVec3) {
+    let c = fog.colour;
+    let w = k.max(c.transmit);
+    (
+        w * (DVec3::splat(1.0 - c.filter) + c.filter * c.rgb),
+        (1.0 - w) * c.rgb,
+    )
+}
+
+/// Ground fog density at height `h`: 1 up to `offset`, `1 / (1 + ((h - offset) /
+/// alt)²)` above (measured against POV-Ray 3.7).
+fn ground_density(h: f64, offset: f64, alt: f64) -> f64 {
+    if h <= offset {
+        1.0
+    } else {
+        let x = (h - offset) / alt;
+        1.0 / (1.0 + x * x)
+    }
+}
+
+/// A primitive of [`ground_density`] over height.
+fn ground_integral(h: f64, offset: f64, alt: f64) -> f64 {
+    if h <= offset {
+        h
+    } else {
+        offset + alt * ((h - offset) / alt).atan()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Colour;
+
+    fn fog(kind: FogKind) -> Fog {
+        Fog {
+            kind,
+            distance: 10.0,
+            colour: Colour::rgb(0.5, 0.6, 0.7),
+        }
+    }
+
+    #[test]
+    fn constant_fog_is_exponential_in_distance() {
+        let f = fog(FogKind::Constant);
+        let k = transmittance(&f, DVec3::ZERO, DVec3::Z, 10.0);
+        assert!((k - (-1.0f64).exp()).abs() < 1e-12);
+        let (pass, own) = blend(&f, k);
+        let c = pass * DVec3::ONE + own;
+        let want = DVec3::ONE * k + (1.0 - k) * DVec3::new(0.5, 0.6, 0.7);
+        assert!((c - want).length() < 1e-12);
+        assert_eq!(transmittance(&f, DVec3::ZERO, DVec3::Z, MISS_DISTANCE), 0.0);
+    }
+
+    #[test]
+    fn transmitting_fog_lets_the_background_through() {
+        let mut f = fog(FogKind::Constant);
+        f.colour.transmit = 1.0;
+        assert_eq!(blend(&f, 0.0), (DVec3::ONE, DVec3::ZERO));
+        // POV-Ray 3.7, fog rgbft <0.9, 0.5, 0.2, 0.5, 0.5> over <0.2, 0.4, 0.8>
+        // where k = 0: 0.545, 0.4, 0.341 (8-bit linear).
+        let mut f = fog(FogKind::Constant);
+        f.colour = Colour {
+            rgb: DVec3::new(0.9, 0.5, 0.2),
+            filter: 0.5,
+            transmit: 0.5,
+        };
+        let (pass, own) = blend(&f, 0.0);
+        let c = DVec3::new(0.2, 0.4, 0.8) * pass + own;
+        assert!((c - DVec3::new(0.545, 0.4, 0.341)).abs().max_element() < 0.003);
+    }
+
+    #[test]
+    fn ground_fog_integrates_its_density() {
+        let f = fog(FogKind::Ground {
+            offset: 1.0,
+            alt: 2.0,
+            up: DVec3::Y,
+        });
+        // Horizontal below the offset: full density.
+        let k = transmittance(&f, DVec3::ZERO, DVec3::X, 10.0);
+        assert!((k - (-1.0f64).exp()).abs() < 1e-12);
+        // Straight up from 0 to 3: 1 (below) + ∫₁³ 1/(1+((h-1)/2)²) dh = 1 + 2 atan 1.
+        let k = transmittance(&f, DVec3::ZERO, DVec3::Y, 3.0);
+        let want = (-(1.0 + 2.0 * 1f64.atan()) / 10.0).exp();
+        assert!((k - want).abs() < 1e-12);
+        // Numerical check along a slanted ray.
+        let dir = DVec3::new(1.0, 0.3, 0.0).normalize();
+        let n = 100_000;
+        let mut sum = 0.0;
+        for i in 0..n {
+            let t = (i as f64 + 0.5) * 20.0 / n as f64;
+            sum += ground_density(t * dir.y, 1.0, 2.0) * 20.0 / n as f64;
+        }
+        let k = transmittance(&f, DVec3::ZERO, dir, 20.0);
+        assert!((k - (-sum / 10.0).exp()).abs() < 1e-6);
+    }
+}

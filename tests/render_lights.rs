@@ -1,0 +1,101 @@
+//! Analytic checks of light sources: one ray straight down onto a white matte floor
+//! (`diffuse 1`, no ambient) under one light, so the pixel is the light arriving.
+
+mod render_support;
+
+use glam::DVec3;
+use render_support::*;
+use rts::build::build;
+use rts::render::{render_pixel, spot_attenuation};
+use rts::scene::{AreaLight, Beam, Camera, Light, LightKind, Object};
+
+/// The floor's brightness at the origin under `light`, with extra `objects`.
+fn floor_under(light: Light, objects: Vec<Object>) -> DVec3 {
+    let cam = Camera {
+        location: DVec3::new(0.0, 10.0, 0.0),
+        direction: -DVec3::Y,
+        right: DVec3::X * 0.01,
+        up: DVec3::Z * 0.01,
+        ..Camera::default()
+    };
+    let floor = with_texture(plane(DVec3::Y, 0.0), texture(DVec3::ONE, matte(0.0, 1.0)));
+    let mut all = vec![floor];
+    all.extend(objects);
+    let mut sc = scene(cam, all);
+    sc.lights.push(light);
+    render_pixel(&build(&sc), 0, 0, 1, 1)
+}
+
+fn assert_close(got: DVec3, want: f64) {
+    assert!(
+        (got - DVec3::splat(want)).abs().max_element() < 1e-9,
+        "{got} vs {want}"
+    );
+}
+
+#[test]
+fn point_lights_do_not_fall_off_with_distance() {
+    // POV-Ray's point light has no inverse-square law: near and far lights give the
+    // same light to a surface facing them.
+    assert_close(
+        floor_under(point_light(DVec3::new(0.0, 2.0, 0.0)), vec![]),
+        1.0,
+    );
+    assert_close(
+        floor_under(point_light(DVec3::new(0.0, 200.0, 0.0)), vec![]),
+        1.0,
+    );
+}
+
+#[test]
+fn fade_distance_and_power() {
+    let light = Light {
+        fade_distance: 2.0,
+        fade_power: 2.0,
+        ..point_light(DVec3::new(0.0, 4.0, 0.0))
+    };
+    // 2 / (1 + (4 / 2)²) = 0.4.
+    assert_close(floor_under(light, vec![]), 0.4);
+}
+
+#[test]
+fn spotlight_between_radius_and_falloff() {
+    // The axis aims 35° away from the lit point: between radius 30 and falloff 45.
+    let aim = DVec3::new(4.0 * 35f64.to_radians().tan(), 0.0, 0.0);
+    let light = Light {
+        kind: LightKind::Spot(Beam::SPOT),
+        point_at: aim,
+        ..point_light(DVec3::new(0.0, 4.0, 0.0))
+    };
+    let want = spot_attenuation(&Beam::SPOT, 35f64.to_radians().cos());
+    assert!(want > 0.1 && want < 0.9);
+    assert_close(floor_under(light.clone(), vec![]), want);
+    // Outside the falloff cone: dark.
+    let far = Light {
+        point_at: DVec3::new(8.0, 0.0, 0.0),
+        ..light
+    };
+    assert_close(floor_under(far, vec![]), 0.0);
+}
+
+#[test]
+fn area_light_weights_its_lights_block_by_block() {
+    // Three lights at x = -1, 0, 1 (height 4); a slab at height 2 hides the left one
+    // only. POV-Ray averages blocks [0,1] and [1,2]: (0.5 + 1) / 2 = 0.75, not 2/3.
+    let light = Light {
+        area: Some(AreaLight {
+            axis1: DVec3::new(2.0, 0.0, 0.0),
+            axis2: DVec3::new(0.0, 0.0, 1.0),
+            size1: 3,
+            size2: 1,
+            jitter: false,
+            adaptive: None,
+            circular: false,
+            orient: false,
+        }),
+        ..point_light(DVec3::new(0.0, 4.0, 0.0))
+    };
+    let slab = cuboid(DVec3::new(-10.0, 1.9, -10.0), DVec3::new(-0.2, 2.1, 10.0));
+    assert_close(floor_under(light.clone(), vec![slab]), 0.75);
+    assert_close(floor_under(light, vec![]), 1.0);
+}
