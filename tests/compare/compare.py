@@ -393,6 +393,9 @@ def main(argv: list[str] | None = None) -> int:
         print(f"error: no rts binary at {rts}: build it with `cargo build --release`", file=sys.stderr)
         return 2
     help_text = rts_options(rts)
+    if aa > 0 and "--antialias" not in help_text and not use_reference:
+        print("note: this rts has no --antialias: both renderers run without anti-aliasing", file=sys.stderr)
+        aa = 0.0
 
     out = args.out.resolve()
     settings = {
