@@ -16,7 +16,8 @@ For every scene in tests/compare/scenes/*.pov (plain POV-Ray 3.7 SDL that rts re
 Without POV-Ray (or with --reference) rts is compared against the committed 160x120
 POV-Ray pictures in tests/compare/reference/ instead (no POV-Ray timing then).
 
-Output: a table on stdout, and report.json + report.md + the pictures (pov/, rts/, diff/)
+Output: a table on stdout, and report.json + report.md + the pictures (pov/, rts/, diff/,
+side/ = POV-Ray | rts | diff side by side)
 in the output folder (default target/compare). Exit status 0 when every scene reaches
 --min-ssim, 1 otherwise, 2 for bad usage or a missing tool.
 
@@ -139,7 +140,11 @@ def compare_pictures(pov: Path, rts: Path, diff: Path) -> dict:
         raise ValueError(f"sizes differ: POV-Ray {a.shape[1]}x{a.shape[0]}, rts {b.shape[1]}x{b.shape[0]}")
     d = np.abs(a.astype(np.int16) - b.astype(np.int16))
     diff.parent.mkdir(parents=True, exist_ok=True)
-    Image.fromarray(np.clip(d * 4, 0, 255).astype(np.uint8), "RGB").save(diff)
+    amplified = np.clip(d * 4, 0, 255).astype(np.uint8)
+    Image.fromarray(amplified, "RGB").save(diff)
+    side = diff.parent.parent / "side" / diff.name  # POV-Ray | rts | diff, to look at
+    side.parent.mkdir(parents=True, exist_ok=True)
+    Image.fromarray(np.concatenate([a, b, amplified], axis=1), "RGB").save(side)
     return {
         "ssim": ssim(luma(a), luma(b)),
         "mae": float(d.mean()),
@@ -444,7 +449,7 @@ def main(argv: list[str] | None = None) -> int:
         row.ssim, row.mae, row.max_diff = m["ssim"], m["mae"], m["max"]
         row.status = "ok" if m["ssim"] >= args.min_ssim else "low ssim"
         row.detail = rr.error
-        row.pictures = {"pov": str(pov_png), "rts": str(rts_png), "diff": str(diff_png)}
+        row.pictures = {"pov": str(pov_png), "rts": str(rts_png), "diff": str(diff_png), "side": str(out / "side" / rts_png.name)}
         print(table([row], args.min_ssim)[2], flush=True)
 
     lines = table(rows, args.min_ssim)
@@ -452,7 +457,7 @@ def main(argv: list[str] | None = None) -> int:
     out.mkdir(parents=True, exist_ok=True)
     (out / "report.json").write_text(json.dumps({"settings": settings, "scenes": [asdict(r) for r in rows]}, indent=2))
     (out / "report.md").write_text(markdown(rows, settings))
-    print(f"\nreport: {out / 'report.md'}, {out / 'report.json'}; pictures in {out}/{{pov,rts,diff}}")
+    print(f"\nreport: {out / 'report.md'}, {out / 'report.json'}; pictures in {out}/{{pov,rts,diff,side}}")
     return 0 if all(r.status == "ok" for r in rows) else 1
 
 
