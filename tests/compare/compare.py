@@ -26,6 +26,7 @@ Usage:
   python3 tests/compare/compare.py --scenes 'camera_*,csg'  # a subset (fnmatch patterns)
   python3 tests/compare/compare.py --reference              # no POV-Ray needed
   python3 tests/compare/compare.py --bless                  # rewrite reference/ with POV-Ray
+  python3 tests/compare/compare.py --pov-only               # time POV-Ray alone
 
 It needs numpy and Pillow: when they cannot be imported it makes a venv in
 target/compare-venv, installs them there (`pip install numpy pillow`) and runs itself again.
@@ -326,7 +327,17 @@ def table(rows: list[Row], min_ssim: float) -> list[str]:
             f"{fmt(r.pov_render_s, '.3f'):>7} {fmt(r.rts_render_s, '.3f'):>7} {fmt(r.ratio, '.2f'):>7}  {r.detail}"
         )
     ok = sum(r.status == "ok" for r in rows)
-    lines.append(f"{ok}/{len(rows)} scenes reach SSIM >= {min_ssim}")
+    compared = [r for r in rows if r.status != "pov only"]
+    if compared:
+        lines.append(f"{ok}/{len(compared)} scenes reach SSIM >= {min_ssim}")
+    timed = [r for r in rows if r.pov_render_s is not None]
+    if timed:
+        total = sum(r.pov_render_s for r in timed)
+        lines.append(f"POV-Ray render time, {len(timed)} scenes: {total:.2f} s")
+    both = [r for r in rows if r.ratio is not None]
+    if both:
+        ratio = sum(r.rts_render_s for r in both) / sum(r.pov_render_s for r in both)
+        lines.append(f"rts / POV-Ray render time over the {len(both)} scenes both rendered: {ratio:.2f}")
     return lines
 
 
@@ -364,6 +375,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--min-ssim", type=float, default=0.95, help="SSIM a scene must reach (default 0.95)")
     ap.add_argument("--timeout", type=float, default=600, help="seconds per render before giving up")
     ap.add_argument("--reference", action="store_true", help="compare with reference/*.png, no POV-Ray needed")
+    ap.add_argument("--pov-only", action="store_true", help="render and time POV-Ray alone (no rts, no comparison)")
     ap.add_argument("--bless", action="store_true", help="render reference/*.png (160x120, AA 0.3) with POV-Ray")
     args = ap.parse_args(argv)
 
@@ -394,10 +406,16 @@ def main(argv: list[str] | None = None) -> int:
         print(f"note: --reference renders at {size[0]}x{size[1]}, AA {aa} (the reference settings)", file=sys.stderr)
 
     rts = args.rts if os.sep in args.rts else (shutil.which(args.rts) or args.rts)
-    if not Path(rts).exists():
+    if args.pov_only:
+        if use_reference:
+            print("error: --pov-only needs POV-Ray: apt-get install -y povray", file=sys.stderr)
+            return 2
+        help_text = "--antialias"
+    elif not Path(rts).exists():
         print(f"error: no rts binary at {rts}: build it with `cargo build --release`", file=sys.stderr)
         return 2
-    help_text = rts_options(rts)
+    else:
+        help_text = rts_options(rts)
     if aa > 0 and "--antialias" not in help_text and not use_reference:
         print("note: this rts has no --antialias: both renderers run without anti-aliasing", file=sys.stderr)
         aa = 0.0
@@ -408,7 +426,7 @@ def main(argv: list[str] | None = None) -> int:
         "aa": aa,
         "jitter": "off",
         "threads": args.threads,
-        "against": "reference pictures" if use_reference else "povray",
+        "against": "reference pictures" if use_reference else ("nothing (--pov-only)" if args.pov_only else "povray"),
         "rts": str(rts),
         "min_ssim": args.min_ssim,
     }
@@ -430,6 +448,10 @@ def main(argv: list[str] | None = None) -> int:
             row.pov_wall_s, row.pov_render_s, row.pov_time_source = pr.wall, pr.render, pr.render_source
             if not pr.ok:
                 row.status, row.detail = "pov error", pr.error
+                print(table([row], args.min_ssim)[2], flush=True)
+                continue
+            if args.pov_only:
+                row.status, row.detail = "pov only", f"wall {pr.wall:.2f} s, parse {fmt(pr.parse, '.3f')} s"
                 print(table([row], args.min_ssim)[2], flush=True)
                 continue
         rr = run_rts(rts, help_text, s, rts_png, size, aa, args.threads, args.timeout)
@@ -458,7 +480,7 @@ def main(argv: list[str] | None = None) -> int:
     (out / "report.json").write_text(json.dumps({"settings": settings, "scenes": [asdict(r) for r in rows]}, indent=2))
     (out / "report.md").write_text(markdown(rows, settings))
     print(f"\nreport: {out / 'report.md'}, {out / 'report.json'}; pictures in {out}/{{pov,rts,diff,side}}")
-    return 0 if all(r.status == "ok" for r in rows) else 1
+    return 0 if all(r.status in ("ok", "pov only") for r in rows) else 1
 
 
 if __name__ == "__main__":
