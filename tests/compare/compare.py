@@ -7,8 +7,9 @@ For every scene in tests/compare/scenes/*.pov (plain POV-Ray 3.7 SDL that rts re
     (`rts render ... --antialias <aa> --jitter 0 --threads <threads>`);
   * compare the two 8-bit pictures: SSIM (Wang et al. 2004, 11x11 Gaussian window with
     sigma 1.5, K1 = 0.01, K2 = 0.03, on luma Y = 0.299 R + 0.587 G + 0.114 B; implemented
-    here in numpy, no scikit-image needed) and the mean absolute error in 8-bit levels over
-    the R, G, B channels;
+    here in numpy, no scikit-image needed; it matches skimage's structural_similarity with
+    gaussian_weights=True, sigma=1.5, use_sample_covariance=False, data_range=255 to 1e-14)
+    and the mean absolute error in 8-bit levels over the R, G, B channels;
   * time each renderer's render phase: POV-Ray's own "Photon + Radiosity + Trace Time"
     from the statistics it prints; rts's "seconds.render" from `--stats-json` when the
     binary has that option, else the "trace N s" of its summary line, else wall time.
@@ -189,7 +190,9 @@ def parse_povray_times(stderr: str) -> dict[str, float]:
     return times
 
 
-def run_povray(povray: str, scene: Path, out: Path, size, aa: float, threads: int, timeout: float) -> Run:
+def run_povray(
+    povray: str, scene: Path, out: Path, size, aa: float, threads: int, timeout: float, extra: list[str] = ()
+) -> Run:
     """Renders with POV-Ray in the scene's folder.
 
     POV-Ray's default I/O security (povray.conf) lets it write only to the current folder and
@@ -199,6 +202,7 @@ def run_povray(povray: str, scene: Path, out: Path, size, aa: float, threads: in
     local = scene.parent / f".rts-compare-{os.getpid()}-{scene.stem}.png"
     cmd = [povray, f"+I{scene.name}", f"+O{local.name}", f"+W{w}", f"+H{h}", "-D", "-V", "+FN8", f"+WT{threads}", "-GP"]
     cmd += [f"+A{aa}", "-J"] if aa > 0 else ["-A"]
+    cmd += list(extra)
     out.parent.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
     try:
@@ -228,7 +232,9 @@ def rts_options(rts: str) -> str:
     return p.stdout + p.stderr
 
 
-def run_rts(rts: str, help_text: str, scene: Path, out: Path, size, aa: float, threads: int, timeout: float) -> Run:
+def run_rts(
+    rts: str, help_text: str, scene: Path, out: Path, size, aa: float, threads: int, timeout: float, extra: list[str] = ()
+) -> Run:
     w, h = size
     cmd = [rts, "render", str(scene), "-o", str(out), "-W", str(w), "-H", str(h), "--threads", str(threads)]
     cmd += ["--allow-path", str(ASSETS), "--message-format", "short"]
@@ -245,6 +251,7 @@ def run_rts(rts: str, help_text: str, scene: Path, out: Path, size, aa: float, t
         stats_path = out.with_suffix(".stats.json")
         stats_path.unlink(missing_ok=True)
         cmd += ["--stats-json", str(stats_path)]
+    cmd += list(extra)
     out.parent.mkdir(parents=True, exist_ok=True)
     out.unlink(missing_ok=True)
     t0 = time.perf_counter()
@@ -375,6 +382,10 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--min-ssim", type=float, default=0.95, help="SSIM a scene must reach (default 0.95)")
     ap.add_argument("--timeout", type=float, default=600, help="seconds per render before giving up")
     ap.add_argument("--reference", action="store_true", help="compare with reference/*.png, no POV-Ray needed")
+    ap.add_argument("--rts-arg", action="append", default=[], metavar="ARG",
+                    help="extra argument for `rts render` (repeat; e.g. --rts-arg=--samples --rts-arg=16)")
+    ap.add_argument("--pov-arg", action="append", default=[], metavar="ARG",
+                    help="extra POV-Ray option (repeat; e.g. --pov-arg=+R4)")
     ap.add_argument("--pov-only", action="store_true", help="render and time POV-Ray alone (no rts, no comparison)")
     ap.add_argument("--bless", action="store_true", help="render reference/*.png (160x120, AA 0.3) with POV-Ray")
     args = ap.parse_args(argv)
@@ -429,6 +440,8 @@ def main(argv: list[str] | None = None) -> int:
         "against": "reference pictures" if use_reference else ("nothing (--pov-only)" if args.pov_only else "povray"),
         "rts": str(rts),
         "min_ssim": args.min_ssim,
+        "rts_args": args.rts_arg,
+        "pov_args": args.pov_arg,
     }
     print(f"comparing {len(scenes)} scenes: {json.dumps(settings)}\n", file=sys.stderr)
     rows: list[Row] = []
@@ -444,7 +457,7 @@ def main(argv: list[str] | None = None) -> int:
                 print(table([row], args.min_ssim)[2], flush=True)
                 continue
         else:
-            pr = run_povray(povray, s, pov_png, size, aa, args.threads, args.timeout)
+            pr = run_povray(povray, s, pov_png, size, aa, args.threads, args.timeout, args.pov_arg)
             row.pov_wall_s, row.pov_render_s, row.pov_time_source = pr.wall, pr.render, pr.render_source
             if not pr.ok:
                 row.status, row.detail = "pov error", pr.error
@@ -454,7 +467,7 @@ def main(argv: list[str] | None = None) -> int:
                 row.status, row.detail = "pov only", f"wall {pr.wall:.2f} s, parse {fmt(pr.parse, '.3f')} s"
                 print(table([row], args.min_ssim)[2], flush=True)
                 continue
-        rr = run_rts(rts, help_text, s, rts_png, size, aa, args.threads, args.timeout)
+        rr = run_rts(rts, help_text, s, rts_png, size, aa, args.threads, args.timeout, args.rts_arg)
         row.rts_wall_s, row.rts_render_s, row.rts_time_source = rr.wall, rr.render, rr.render_source
         if not rr.ok:
             row.status, row.detail = "rts error", rr.error
