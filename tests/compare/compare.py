@@ -72,13 +72,13 @@ def ensure_dependencies() -> None:
     python = venv / "bin" / "python"
     if not python.exists():
         print(f"numpy/Pillow not found: making a venv in {venv} (pip install numpy pillow)", file=sys.stderr)
-        made = subprocess.run([sys.executable, "-m", "venv", str(venv)])
+        made = subprocess.run([sys.executable, "-m", "venv", str(venv)], check=False)
         if made.returncode != 0:
             sys.exit(
                 "error: cannot make a venv (on Debian: apt-get install -y python3-venv), "
                 "or install the modules yourself: pip install numpy pillow"
             )
-    installed = subprocess.run([str(python), "-m", "pip", "install", "-q", "numpy", "pillow"])
+    installed = subprocess.run([str(python), "-m", "pip", "install", "-q", "numpy", "pillow"], check=False)
     if installed.returncode != 0:
         sys.exit("error: `pip install numpy pillow` failed in the venv")
     env = dict(os.environ, RTS_COMPARE_IN_VENV="1")
@@ -206,7 +206,7 @@ def run_povray(
     out.parent.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
     try:
-        p = subprocess.run(cmd, cwd=scene.parent, capture_output=True, text=True, timeout=timeout)
+        p = subprocess.run(cmd, check=False, cwd=scene.parent, capture_output=True, text=True, timeout=timeout)
     except subprocess.TimeoutExpired:
         local.unlink(missing_ok=True)
         return Run(False, timeout, error=f"timed out after {timeout:.0f} s")
@@ -228,12 +228,20 @@ RTS_PARSE = re.compile(r"parse\+eval\s+([\d.]+)\s*s")
 
 def rts_options(rts: str) -> str:
     """The text of `rts render --help`, to see which options this build has."""
-    p = subprocess.run([rts, "render", "--help"], capture_output=True, text=True)
+    p = subprocess.run([rts, "render", "--help"], check=False, capture_output=True, text=True)
     return p.stdout + p.stderr
 
 
 def run_rts(
-    rts: str, help_text: str, scene: Path, out: Path, size, aa: float, threads: int, timeout: float, extra: list[str] = ()
+    rts: str,
+    help_text: str,
+    scene: Path,
+    out: Path,
+    size,
+    aa: float,
+    threads: int,
+    timeout: float,
+    extra: list[str] = (),
 ) -> Run:
     w, h = size
     cmd = [rts, "render", str(scene), "-o", str(out), "-W", str(w), "-H", str(h), "--threads", str(threads)]
@@ -256,7 +264,7 @@ def run_rts(
     out.unlink(missing_ok=True)
     t0 = time.perf_counter()
     try:
-        p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+        p = subprocess.run(cmd, check=False, capture_output=True, text=True, timeout=timeout)
     except subprocess.TimeoutExpired:
         return Run(False, timeout, error=f"timed out after {timeout:.0f} s")
     wall = time.perf_counter() - t0
@@ -354,9 +362,11 @@ def markdown(rows: list[Row], settings: dict) -> str:
         "",
         f"Settings: {json.dumps(settings)}",
         "",
-        "Render times are the render phase only (POV-Ray: photon + radiosity + trace time from its own "
-        "statistics; rts: `seconds.render` of `--stats-json`, else the trace time of its summary line, "
-        "else wall time). Ratio = rts / POV-Ray (below 1: rts is faster).",
+        (
+            "Render times are the render phase only (POV-Ray: photon + radiosity + trace time from its own "
+            "statistics; rts: `seconds.render` of `--stats-json`, else the trace time of its summary line, "
+            "else wall time). Ratio = rts / POV-Ray (below 1: rts is faster)."
+        ),
         "",
         "| scene | status | SSIM | MAE (levels) | max | POV-Ray render s | rts render s | rts/POV | detail |",
         "|---|---|---:|---:|---:|---:|---:|---:|---|",
@@ -382,10 +392,20 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--min-ssim", type=float, default=0.95, help="SSIM a scene must reach (default 0.95)")
     ap.add_argument("--timeout", type=float, default=600, help="seconds per render before giving up")
     ap.add_argument("--reference", action="store_true", help="compare with reference/*.png, no POV-Ray needed")
-    ap.add_argument("--rts-arg", action="append", default=[], metavar="ARG",
-                    help="extra argument for `rts render` (repeat; e.g. --rts-arg=--samples --rts-arg=16)")
-    ap.add_argument("--pov-arg", action="append", default=[], metavar="ARG",
-                    help="extra POV-Ray option (repeat; e.g. --pov-arg=+R4)")
+    ap.add_argument(
+        "--rts-arg",
+        action="append",
+        default=[],
+        metavar="ARG",
+        help="extra argument for `rts render` (repeat; e.g. --rts-arg=--samples --rts-arg=16)",
+    )
+    ap.add_argument(
+        "--pov-arg",
+        action="append",
+        default=[],
+        metavar="ARG",
+        help="extra POV-Ray option (repeat; e.g. --pov-arg=+R4)",
+    )
     ap.add_argument("--pov-only", action="store_true", help="render and time POV-Ray alone (no rts, no comparison)")
     ap.add_argument("--bless", action="store_true", help="render reference/*.png (160x120, AA 0.3) with POV-Ray")
     args = ap.parse_args(argv)
@@ -484,7 +504,12 @@ def main(argv: list[str] | None = None) -> int:
         row.ssim, row.mae, row.max_diff = m["ssim"], m["mae"], m["max"]
         row.status = "ok" if m["ssim"] >= args.min_ssim else "low ssim"
         row.detail = rr.error
-        row.pictures = {"pov": str(pov_png), "rts": str(rts_png), "diff": str(diff_png), "side": str(out / "side" / rts_png.name)}
+        row.pictures = {
+            "pov": str(pov_png),
+            "rts": str(rts_png),
+            "diff": str(diff_png),
+            "side": str(out / "side" / rts_png.name),
+        }
         print(table([row], args.min_ssim)[2], flush=True)
 
     lines = table(rows, args.min_ssim)

@@ -6,6 +6,7 @@ assets/tiles.png  32x32 RGB image map: four coloured quadrants with a white cros
 
 Run: python3 tests/compare/make_assets.py  (needs numpy and Pillow).
 """
+
 from pathlib import Path
 
 import numpy as np
