@@ -1,5 +1,6 @@
 // includes.pov -- names from the standard include files: colors.inc,
-// textures.inc, metals.inc, glass.inc, woods.inc, stones.inc.
+// textures.inc, metals.inc, glass.inc, woods.inc, stones.inc (the stone and
+// wood textures use POV-Ray's noise: small differences are expected there).
 #version 3.7;
 global_settings { assumed_gamma 1.0 max_trace_level 6 }
 #include "colors.inc"

@@ -1,5 +1,6 @@
 // normals.pov -- bumps, dents, ripples, waves, wrinkles on spheres, and a
-// rippled floor.
+// rippled floor. bumps, dents and wrinkles use POV-Ray's noise: pixel
+// equality is not expected there.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 3, -9> look_at <0, 0.8, 0> angle 50 }
