@@ -169,6 +169,7 @@ class Run:
     render_source: str = ""  # where `render` comes from
     parse: float | None = None
     error: str = ""
+    camera_rays: int | None = None  # primary rays, anti-aliasing samples included
 
 
 def _first_error_line(text: str) -> str:
@@ -179,6 +180,7 @@ def _first_error_line(text: str) -> str:
     return (lines[0] if lines else "no output")[:300]
 
 
+POV_PIXELS = re.compile(r"Pixels:\s+(\d+)\s+Samples:\s+(\d+)")
 POV_TIME = re.compile(r"(Parse|Bounding|Photon|Radiosity|Trace) Time:.*?\(\s*([\d.]+) seconds\)")
 
 
@@ -216,10 +218,12 @@ def run_povray(
         return Run(False, wall, error=_first_error_line(p.stderr + p.stdout))
     shutil.move(local, out)
     t = parse_povray_times(p.stderr + p.stdout)
+    px = POV_PIXELS.search(p.stderr + p.stdout)
+    rays = int(px.group(1)) + int(px.group(2)) if px else None
     if "Trace" in t:
         render = t.get("Photon", 0.0) + t.get("Radiosity", 0.0) + t["Trace"]
-        return Run(True, wall, render, "povray stats (photon+radiosity+trace)", t.get("Parse"))
-    return Run(True, wall, wall, "wall clock")
+        return Run(True, wall, render, "povray stats (photon+radiosity+trace)", t.get("Parse"), camera_rays=rays)
+    return Run(True, wall, wall, "wall clock", camera_rays=rays)
 
 
 RTS_TRACE = re.compile(r"trace\s+([\d.]+)\s*s")
@@ -276,6 +280,8 @@ def run_rts(
         try:
             stats = json.loads(stats_path.read_text())
             secs = stats.get("seconds", {})
+            if isinstance(stats.get("camera_samples"), int):
+                run.camera_rays = stats["camera_samples"]
             if "render" in secs:
                 run.render, run.render_source = float(secs["render"]), "rts --stats-json"
                 run.parse = secs.get("parse_eval")
@@ -311,6 +317,8 @@ class Row:
     ratio: float | None = None  # rts render / POV-Ray render; below 1 means rts is faster
     rts_time_source: str = ""
     pov_time_source: str = ""
+    pov_camera_rays: int | None = None  # POV-Ray's "Pixels" + "Samples"
+    rts_camera_rays: int | None = None  # rts's `camera_samples` (--stats-json)
     pictures: dict = field(default_factory=dict)
 
 
@@ -368,14 +376,16 @@ def markdown(rows: list[Row], settings: dict) -> str:
             "else wall time). Ratio = rts / POV-Ray (below 1: rts is faster)."
         ),
         "",
-        "| scene | status | SSIM | MAE (levels) | max | POV-Ray render s | rts render s | rts/POV | detail |",
-        "|---|---|---:|---:|---:|---:|---:|---:|---|",
+        "| scene | status | SSIM | MAE (levels) | max | POV-Ray render s | rts render s | rts/POV "
+        "| POV-Ray camera rays | rts camera rays | detail |",
+        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|",
     ]
     for r in rows:
         detail = r.detail.replace("|", "\\|")
         out.append(
             f"| {r.scene} | {r.status} | {fmt(r.ssim, '.3f')} | {fmt(r.mae, '.2f')} | {fmt(r.max_diff, 'd')} | "
-            f"{fmt(r.pov_render_s, '.3f')} | {fmt(r.rts_render_s, '.3f')} | {fmt(r.ratio, '.2f')} | {detail} |"
+            f"{fmt(r.pov_render_s, '.3f')} | {fmt(r.rts_render_s, '.3f')} | {fmt(r.ratio, '.2f')} | "
+            f"{fmt(r.pov_camera_rays, 'd')} | {fmt(r.rts_camera_rays, 'd')} | {detail} |"
         )
     return "\n".join(out) + "\n"
 
@@ -479,6 +489,7 @@ def main(argv: list[str] | None = None) -> int:
         else:
             pr = run_povray(povray, s, pov_png, size, aa, args.threads, args.timeout, args.pov_arg)
             row.pov_wall_s, row.pov_render_s, row.pov_time_source = pr.wall, pr.render, pr.render_source
+            row.pov_camera_rays = pr.camera_rays
             if not pr.ok:
                 row.status, row.detail = "pov error", pr.error
                 print(table([row], args.min_ssim)[2], flush=True)
@@ -489,6 +500,7 @@ def main(argv: list[str] | None = None) -> int:
                 continue
         rr = run_rts(rts, help_text, s, rts_png, size, aa, args.threads, args.timeout, args.rts_arg)
         row.rts_wall_s, row.rts_render_s, row.rts_time_source = rr.wall, rr.render, rr.render_source
+        row.rts_camera_rays = rr.camera_rays
         if not rr.ok:
             row.status, row.detail = "rts error", rr.error
             print(table([row], args.min_ssim)[2], flush=True)
