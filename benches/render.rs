@@ -13,9 +13,11 @@ use rts::scene::Scene;
 use rts::source::{FileAccess, SourceMap};
 use std::path::{Path, PathBuf};
 
-/// The scenes measured: the basics, CSG, glass, patterns, lights, the standard includes.
+/// The scenes measured: the basics, 900 reflective spheres, CSG, glass, patterns, lights, the
+/// standard includes.
 const SCENES: &[&str] = &[
     "basic_shapes",
+    "speed_spheres",
     "csg",
     "glass",
     "patterns_regular",
