@@ -407,7 +407,7 @@ def main(argv: list[str] | None = None) -> int:
         action="append",
         default=[],
         metavar="ARG",
-        help="extra argument for `rts render` (repeat; e.g. --rts-arg=--samples --rts-arg=16)",
+        help="extra argument for `rts render` (repeat; e.g. --rts-arg=--aa-depth --rts-arg=4)",
     )
     ap.add_argument(
         "--pov-arg",
