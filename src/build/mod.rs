@@ -302,6 +302,7 @@ mod tests {
                 transform: None,
             },
             finish: Finish::default(),
+            ..Texture::default()
         })
     }
 

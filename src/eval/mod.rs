@@ -15,6 +15,7 @@ mod include;
 mod items;
 mod materials;
 mod objects;
+mod patterns;
 mod scope;
 pub mod value;
 

@@ -45,18 +45,17 @@ pub fn incident(
     if cos_l.is_nan() || cos_l <= 0.0 {
         return None;
     }
+    let mut colour = light.colour;
     if !light.shadowless {
         let (shadow_ray, eps) = Ray::secondary(p, geo_n, dir);
         if dist > eps {
             ctx.stats.shadow += 1;
-            if world.occluded(&shadow_ray, eps, dist - eps) {
+            // Filtered by transparent surfaces on the way (0 behind opaque ones).
+            colour *= super::shade::shadow_filter(world, &shadow_ray, eps, dist - eps);
+            if colour == DVec3::ZERO {
                 return None;
             }
         }
     }
-    Some(Incident {
-        dir,
-        dist,
-        colour: light.colour,
-    })
+    Some(Incident { dir, dist, colour })
 }

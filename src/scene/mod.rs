@@ -13,7 +13,10 @@ mod transform;
 
 pub use camera::{Camera, CameraKind};
 pub use light::{Light, LightKind};
-pub use material::{Colour, Finish, Interior, Pattern, Pigment, Reflection, Texture};
+pub use material::{
+    compose, Colour, Finish, ImageMap, Interior, Mapped, Normal, Pattern, PatternKind, PatternMap,
+    PatternMods, Pigment, Reflection, Texture, Wave,
+};
 pub use object::{Object, ObjectFlags, Shape};
 pub use transform::Transform;
 
