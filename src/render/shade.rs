@@ -144,7 +144,7 @@ fn shade(
     for tex in layers(s.texture) {
         let c = pigment::evaluate_uv(&tex.pigment, tp, s.uv);
         let n = match &tex.normal {
-            Some(nrm) => facing(pigment::perturb(nrm, s.normal, p, s.texture_from_world)),
+            Some(nrm) => pigment::perturb(nrm, facing(s.normal), p, s.texture_from_world),
             None => facing(s.normal),
         };
         last_n = n;
