@@ -118,11 +118,11 @@ pub fn colour_at(entries: &[(f64, Colour)], v: f64) -> Colour {
 fn bump_gain(kind: &crate::scene::PatternKind) -> f64 {
     use crate::scene::PatternKind as K;
     match kind {
-        K::Bumps | K::Bozo => 0.44,
+        K::Bumps | K::Bozo => 0.8,
         K::Dents => 0.2,
-        K::Ripples => 0.65,
+        K::Ripples => 0.36,
         K::Waves => 0.52,
-        K::Wrinkles => 0.155,
+        K::Wrinkles => 0.1,
         _ => 0.12,
     }
 }

@@ -91,7 +91,7 @@ pub fn signed_noise(p: DVec3) -> f64 {
 
 /// Gain that spreads the signed noise over POV-Ray's range (measured on bozo
 /// histograms: POV-Ray's generator 2 fills [0, 1] with a soft peak at 0.5).
-const GAIN: f64 = 0.95;
+const GAIN: f64 = 0.52;
 
 /// POV-Ray's `noise`: [0, 1], 0.5 on average. Generator 1 leaves values outside
 /// the range clipped like 2 does here; generator 3 (Perlin's improved noise) uses

@@ -88,7 +88,7 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
         }
         PatternKind::Agate => {
             let t = turbulence(p, 7, 0.5, 2.0);
-            let v = 0.5 + 0.5 * (TAU * (p.z + 2.0 * t)).sin();
+            let v = 0.5 + 0.5 * (TAU * (p.z + 3.8 * t)).sin();
             v.powf(0.77)
         }
         PatternKind::Wrinkles => {
@@ -98,7 +98,7 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
                 sum += (noise(p * freq, g) - 0.5).abs() / freq;
                 freq *= 2.0;
             }
-            (sum * 1.3).min(1.0)
+            (sum * 2.7).min(1.0)
         }
         PatternKind::Ripples | PatternKind::Waves => {
             let mut sum = 0.0;
@@ -109,9 +109,11 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
                 } else {
                     1.0
                 };
-                sum += (0.5 + 0.5 * (TAU * (d * m.frequency * f + m.phase)).sin()) / 10.0;
+                sum += (TAU * (d * m.frequency * f + m.phase)).sin() / 10.0;
             }
-            sum
+            // Spread like POV-Ray's (measured contrast of a grey-mapped render).
+            let spread = if matches!(kind, PatternKind::Waves) { 0.5 } else { 1.25 };
+            (0.5 + spread * sum).clamp(0.0, 1.0)
         }
         PatternKind::Checker | PatternKind::Hexagon | PatternKind::Brick { .. } => 0.0,
     }
