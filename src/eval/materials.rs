@@ -117,6 +117,8 @@ const INTERIOR_ITEMS: &[&str] = &[
 ];
 const IMAGE_MAP_ITEMS: &[&str] = &[
     "png",
+    "jpeg",
+    "exr",
     "map_type",
     "interpolate",
     "once",
@@ -125,7 +127,7 @@ const IMAGE_MAP_ITEMS: &[&str] = &[
     "uv_mapping",
 ];
 /// Pattern keywords of POV-Ray that a later release implements.
-const LATER_PATTERNS: &[&str] = &["warp", "uv_mapping"];
+const LATER_PATTERNS: &[&str] = &["warp"];
 const LATER_FINISH: &[&str] = &["irid", "reflection_exponent", "fresnel"];
 
 fn compose_pattern(p: &mut Pigment, t: &Transform) {
@@ -199,6 +201,7 @@ impl Evaluator<'_> {
         let mut pattern_given = false;
         let mut spec = PatternSpec::default();
         let mut modified = false;
+        let mut uv_mapping = false;
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
                 Tok::Val(Value::Pigment(p), _) if !pattern_given => {
@@ -271,6 +274,10 @@ impl Evaluator<'_> {
                 Tok::Kw("quick_color" | "quick_colour", _) => {
                     self.take_colour(c, "a colour").map(|_| ())
                 }
+                Tok::Kw("uv_mapping", _) => {
+                    uv_mapping = true;
+                    Ok(())
+                }
                 Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_PATTERNS.contains(&kw) => {
                     Err(Diagnostic::error(
                         codes::UNSUPPORTED,
@@ -292,6 +299,24 @@ impl Evaluator<'_> {
             };
             if let Err(f) = r {
                 self.report(f);
+            }
+        }
+        if uv_mapping {
+            match &pig.pattern {
+                Pattern::Image(im) => {
+                    let mut im = (**im).clone();
+                    im.uv_mapping = true;
+                    pig.pattern = Pattern::Image(Arc::new(im));
+                }
+                _ => self.report(
+                    Diagnostic::error(
+                        codes::UNSUPPORTED,
+                        c.span,
+                        "`uv_mapping` is implemented for `image_map` pigments only",
+                    )
+                    .with_help("remove `uv_mapping`, or use an image_map")
+                    .into(),
+                ),
             }
         }
         if modified {
@@ -452,18 +477,20 @@ impl Evaluator<'_> {
         let mut transmit_all: Option<f64> = None;
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
-                Tok::Kw("png", _) => c.value("the image's file name").and_then(|(v, s)| match v {
-                    Value::Str(name) => {
-                        file = Some((name.to_string(), s));
-                        Ok(())
-                    }
-                    other => Err(Diagnostic::error(
-                        codes::TYPE_MISMATCH,
-                        s,
-                        format!("expected a file name, found {}", other.kind()),
-                    )
-                    .into()),
-                }),
+                Tok::Kw("png" | "jpeg" | "exr", _) => {
+                    c.value("the image's file name").and_then(|(v, s)| match v {
+                        Value::Str(name) => {
+                            file = Some((name.to_string(), s));
+                            Ok(())
+                        }
+                        other => Err(Diagnostic::error(
+                            codes::TYPE_MISMATCH,
+                            s,
+                            format!("expected a file name, found {}", other.kind()),
+                        )
+                        .into()),
+                    })
+                }
                 Tok::Val(Value::Str(name), s) if file.is_none() => {
                     file = Some((name.to_string(), s));
                     Ok(())
@@ -516,7 +543,7 @@ impl Evaluator<'_> {
                     span,
                     format!("cannot read image `{name}`: {e}"),
                 )
-                .with_help("image_map reads PNG files; the path is relative to the scene"),
+                .with_help("image_map reads PNG, JPEG and OpenEXR files"),
             )
         })?;
         let rgba = img.to_rgba32f();
@@ -525,15 +552,9 @@ impl Evaluator<'_> {
         im.pixels = rgba
             .pixels()
             .map(|p| {
-                // sRGB-encoded 8/16-bit files are decoded to linear light.
-                let lin = |v: f32| {
-                    let v = f64::from(v);
-                    if v <= 0.04045 {
-                        v / 12.92
-                    } else {
-                        ((v + 0.055) / 1.055).powf(2.4)
-                    }
-                };
+                // POV-Ray 3.7 uses the stored values as they are (measured: a
+                // PNG without gamma information is not decoded from sRGB).
+                let lin = f64::from;
                 Colour {
                     rgb: glam::DVec3::new(lin(p[0]), lin(p[1]), lin(p[2])),
                     filter: filter_all.unwrap_or(0.0),

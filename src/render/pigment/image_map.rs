@@ -20,16 +20,12 @@ pub fn lookup(im: &ImageMap, p: DVec3, uv: Option<DVec2>) -> Colour {
                 if len == 0.0 {
                     (0.0, 0.5)
                 } else {
-                    let u = (p.x.atan2(p.z) + PI) / TAU;
-                    // Longitude 0 at -z, as seen from a camera at -z looking at +z.
-                    let u = (u + 0.5).rem_euclid(1.0);
+                    // Longitude from +x, growing towards +z (measured on POV-Ray 3.7).
+                    let u = (p.z.atan2(p.x) / TAU).rem_euclid(1.0);
                     (u, 0.5 + (p.y / len).clamp(-1.0, 1.0).asin() / PI)
                 }
             }
-            2 => {
-                let u = (p.x.atan2(p.z) + PI) / TAU;
-                ((u + 0.5).rem_euclid(1.0), p.y)
-            }
+            2 => ((p.z.atan2(p.x) / TAU).rem_euclid(1.0), p.y),
             _ => (p.x, p.y),
         }
     };

@@ -112,7 +112,11 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
                 sum += (TAU * (d * m.frequency * f + m.phase)).sin() / 10.0;
             }
             // Spread like POV-Ray's (measured contrast of a grey-mapped render).
-            let spread = if matches!(kind, PatternKind::Waves) { 0.5 } else { 1.25 };
+            let spread = if matches!(kind, PatternKind::Waves) {
+                0.5
+            } else {
+                1.25
+            };
             (0.5 + spread * sum).clamp(0.0, 1.0)
         }
         PatternKind::Checker | PatternKind::Hexagon | PatternKind::Brick { .. } => 0.0,
