@@ -239,9 +239,7 @@ impl Evaluator<'_> {
                     }
                 }
                 Tok::Kw(kw, span) if PATTERNS.contains(&kw) => {
-                    if pattern_given && spec.kind.is_none() {
-                        Err(self.second_pattern(span))
-                    } else if spec.kind.is_some() && !modified {
+                    if pattern_given {
                         Err(self.second_pattern(span))
                     } else {
                         pattern_given = true;
