@@ -15,6 +15,8 @@ pub const STDLIB: &[(&str, &str)] = &[
     ("finish.inc", include_str!("../stdlib/finish.inc")),
     ("glass.inc", include_str!("../stdlib/glass.inc")),
     ("metals.inc", include_str!("../stdlib/metals.inc")),
+    ("shapes.inc", include_str!("../stdlib/shapes.inc")),
+    ("shapes2.inc", include_str!("../stdlib/shapes2.inc")),
     ("stones.inc", include_str!("../stdlib/stones.inc")),
     ("textures.inc", include_str!("../stdlib/textures.inc")),
     ("woods.inc", include_str!("../stdlib/woods.inc")),
