@@ -122,7 +122,7 @@ fn bump_gain(kind: &crate::scene::PatternKind) -> f64 {
         K::Dents => 0.2,
         K::Ripples => 0.36,
         K::Waves => 0.52,
-        K::Wrinkles => 0.1,
+        K::Wrinkles => 0.55,
         _ => 0.12,
     }
 }
@@ -144,7 +144,7 @@ pub fn perturb(normal: &Normal, n: DVec3, p: DVec3, texture_from_world: Option<&
         if normal.kind.is_list() {
             patterns::list_index(&normal.kind, patterns::warp(t, &normal.mods)) as f64
         } else {
-            patterns::value(&normal.kind, t, &normal.mods)
+            patterns::height(&normal.kind, t, &normal.mods)
         }
     };
     // Central differences in world space, with a step relative to the pattern's
@@ -165,7 +165,14 @@ pub fn perturb(normal: &Normal, n: DVec3, p: DVec3, texture_from_world: Option<&
     // The slope in the pattern's own units.
     let g = g / scale.max(1e-12);
     let tangential = g - g.dot(n) * n;
-    let out = n - normal.bump_size * bump_gain(&normal.kind) * tangential;
+    // Ripples and waves keep their depth at any frequency, as in POV-Ray.
+    let freq = match normal.kind {
+        crate::scene::PatternKind::Ripples | crate::scene::PatternKind::Waves => {
+            normal.mods.frequency.abs().max(1e-9)
+        }
+        _ => 1.0,
+    };
+    let out = n - normal.bump_size * bump_gain(&normal.kind) / freq * tangential;
     let len = out.length();
     if len > 0.0 && len.is_finite() {
         out / len

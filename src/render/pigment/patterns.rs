@@ -92,13 +92,15 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
             v.powf(0.77)
         }
         PatternKind::Wrinkles => {
+            // A smooth 1/f sum of ten octaves (no creases, so its slope is smooth
+            // too, as POV-Ray's wrinkled normals are).
             let mut sum = 0.0;
             let mut freq = 1.0;
             for _ in 0..10 {
-                sum += (noise(p * freq, g) - 0.5).abs() / freq;
+                sum += (noise(p * freq, g) - 0.5) / freq;
                 freq *= 2.0;
             }
-            (sum * 2.7).min(1.0)
+            (0.5 + WRINKLES_SPREAD * sum).clamp(0.0, 1.0)
         }
         PatternKind::Ripples | PatternKind::Waves => {
             let mut sum = 0.0;
@@ -122,6 +124,10 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
         PatternKind::Checker | PatternKind::Hexagon | PatternKind::Brick { .. } => 0.0,
     }
 }
+
+/// Spread of the wrinkles sum around 0.5 (fitted to the contrast of POV-Ray's
+/// grey-mapped wrinkles).
+const WRINKLES_SPREAD: f64 = 1.0;
 
 /// Ten fixed wave centres for `ripples` and `waves`, scattered in the unit cube
 /// around the origin (ours; POV-Ray's are random).
@@ -188,6 +194,23 @@ pub fn value(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
         PatternKind::Ripples | PatternKind::Waves => wave(m.wave, v),
         _ => wave(m.wave, v * m.frequency + m.phase),
     }
+}
+
+/// The height field a `normal` pattern's slope is taken from: the pattern's value,
+/// except for `wrinkles`, whose octaves are weighted 1/f² so the fine octaves do
+/// not dominate the slope (POV-Ray's wrinkled surfaces are smooth at small scale).
+pub fn height(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
+    if let PatternKind::Wrinkles = kind {
+        let q = warp(p, m);
+        let mut sum = 0.0;
+        let mut freq = 1.0;
+        for _ in 0..10 {
+            sum += (noise(q * freq, m.noise_generator) - 0.5) / (freq * freq);
+            freq *= 2.0;
+        }
+        return sum;
+    }
+    value(kind, p, m)
 }
 
 #[cfg(test)]
