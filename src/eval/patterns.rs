@@ -317,36 +317,12 @@ impl Evaluator<'_> {
         while let Some(tok) = c.next() {
             match tok {
                 Tok::Bracket(items, span) => {
-                    let mut v = None;
-                    let mut pig = None;
-                    for t in items {
-                        match t {
-                            Tok::Val(Value::Float(x), _) if v.is_none() => v = Some(x),
-                            Tok::Block(_, Value::Pigment(p), _)
-                            | Tok::Val(Value::Pigment(p), _) => pig = Some((*p).clone()),
-                            Tok::Val(col @ (Value::Colour(_) | Value::Vector(_)), s) => {
-                                pig = Some(solid(self.to_colour(&col, s)?))
-                            }
-                            Tok::Comma(_) => {}
-                            Tok::Val(Value::Poison, _) | Tok::Block(_, Value::Poison, _) => {
-                                return Err(Fail::silent())
-                            }
-                            other => {
-                                return Err(Diagnostic::error(
-                                    codes::UNEXPECTED_ITEM,
-                                    other.span(),
-                                    format!(
-                                        "{} does not belong in a pigment map entry",
-                                        other.describe()
-                                    ),
-                                )
-                                .with_help("write entries as `[VALUE pigment { … }]`")
-                                .into())
-                            }
-                        }
-                    }
-                    match (v, pig) {
-                        (Some(v), Some(p)) => entries.push((v, p)),
+                    // `[V pigment { … }]`, `[V NAME]`, `[V COLOUR]` or, as POV-Ray
+                    // also allows, `[V PIGMENT-BODY]` (`[0.5 checker rgb 1, rgb 0]`).
+                    let mut it = items.into_iter().peekable();
+                    let v = match it.next() {
+                        Some(Tok::Val(Value::Float(x), _)) => x,
+                        Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
                         _ => {
                             return Err(Diagnostic::error(
                                 codes::MISSING_VALUE,
@@ -356,7 +332,28 @@ impl Evaluator<'_> {
                             .with_help("write entries as `[VALUE pigment { … }]`")
                             .into())
                         }
+                    };
+                    if matches!(it.peek(), Some(Tok::Comma(_))) {
+                        it.next();
                     }
+                    let rest: Vec<Tok> = it.collect();
+                    let pig = match rest.as_slice() {
+                        [Tok::Block(_, Value::Pigment(p), _)] => (**p).clone(),
+                        [] => {
+                            return Err(Diagnostic::error(
+                                codes::MISSING_VALUE,
+                                span,
+                                "a pigment map entry needs a value and a pigment",
+                            )
+                            .with_help("write entries as `[VALUE pigment { … }]`")
+                            .into())
+                        }
+                        _ => {
+                            let mut inner = Cursor::new(rest, "pigment_map", span);
+                            self.pigment(&mut inner)?
+                        }
+                    };
+                    entries.push((v, pig));
                 }
                 Tok::Comma(_) => {}
                 other => return Err(self.unexpected(c, &other, &["[VALUE pigment { … }]"])),
