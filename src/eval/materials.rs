@@ -199,7 +199,7 @@ impl Evaluator<'_> {
     pub(crate) fn pigment(&mut self, c: &mut Cursor) -> R<Pigment> {
         let mut pig = self.default_texture.pigment.clone();
         let mut pattern_given = false;
-        let mut spec = PatternSpec::default();
+        let mut spec = self.new_spec();
         let mut modified = false;
         let mut uv_mapping = false;
         while let Some(tok) = c.next() {
@@ -362,7 +362,7 @@ impl Evaluator<'_> {
             Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
             _ => None,
         };
-        let mut spec = PatternSpec::default();
+        let mut spec = self.new_spec();
         let mut bump = n.as_ref().map_or(0.5, |x| x.bump_size);
         let mut transform = n.as_ref().and_then(|x| x.transform.clone());
         if let Some(x) = &n {

@@ -98,6 +98,30 @@ pub(crate) fn default_map(kind: &PatternKind) -> PatternMap {
 }
 
 impl Evaluator<'_> {
+    /// A pattern being read, with the `noise_generator` in force.
+    pub(crate) fn new_spec(&self) -> PatternSpec {
+        let mut spec = PatternSpec::default();
+        spec.mods.noise_generator = self.scene.global.noise_generator;
+        spec
+    }
+
+    /// `noise_generator N` in `global_settings` (1, 2 or 3).
+    pub(crate) fn noise_generator(&mut self, c: &mut Cursor, _kw: crate::span::Span) -> R<()> {
+        let (v, s) = c.value("the noise generator (1, 2 or 3)")?;
+        let n = self.to_float(&v, s)?;
+        if !(1.0..=3.0).contains(&n) || n.fract() != 0.0 {
+            return Err(Diagnostic::error(
+                codes::OUT_OF_RANGE,
+                s,
+                format!("noise_generator must be 1, 2 or 3, found {n}"),
+            )
+            .with_help("2 is POV-Ray's default")
+            .into());
+        }
+        self.scene.global.noise_generator = n as u8;
+        Ok(())
+    }
+
     /// Reads the parameters that follow pattern keyword `kw` (already taken).
     pub(crate) fn pattern_kw(&mut self, kw: &str, c: &mut Cursor, spec: &mut PatternSpec) -> R<()> {
         let kind = match kw {

@@ -62,6 +62,8 @@ pub struct GlobalSettings {
     /// `adc_bailout`: rays whose contribution falls below this are not traced further
     /// (default 1/255).
     pub adc_bailout: f64,
+    /// `noise_generator`: 1, 2 or 3 (default 2); patterns declared after it use it.
+    pub noise_generator: u8,
 }
 
 impl Default for GlobalSettings {
@@ -71,6 +73,7 @@ impl Default for GlobalSettings {
             assumed_gamma: None,
             max_trace_level: 5,
             adc_bailout: 1.0 / 255.0,
+            noise_generator: 2,
         }
     }
 }
