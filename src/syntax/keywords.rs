@@ -33,6 +33,7 @@ pub const KEYWORDS: &[&str] = &[
     "colour_map",
     "cone",
     "conserve_energy",
+    "crand",
     "cubic_spline",
     "cubic_wave",
     "cylinder",
