@@ -245,7 +245,7 @@ impl Evaluator<'_> {
                         pattern_given = true;
                         modified = true;
                         pig.transform = None;
-                        self.pattern_kw(kw, c, &mut spec)
+                        self.pattern_kw(kw, c, &mut spec, true)
                     }
                 }
                 Tok::Kw(kw, _) if MODIFIERS.contains(&kw) => {
@@ -373,7 +373,7 @@ impl Evaluator<'_> {
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
                 Tok::Kw(kw, _) if PATTERNS.contains(&kw) => {
-                    let r = self.pattern_kw(kw, c, &mut spec);
+                    let r = self.pattern_kw(kw, c, &mut spec, false);
                     if r.is_ok() && c.value_next() {
                         self.take_float(c, "the bump size").map(|x| bump = x)
                     } else {

@@ -122,8 +122,15 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    /// Reads the parameters that follow pattern keyword `kw` (already taken).
-    pub(crate) fn pattern_kw(&mut self, kw: &str, c: &mut Cursor, spec: &mut PatternSpec) -> R<()> {
+    /// Reads the parameters that follow pattern keyword `kw` (already taken); list
+    /// patterns read their entries when `entries` (pigments; not normals).
+    pub(crate) fn pattern_kw(
+        &mut self,
+        kw: &str,
+        c: &mut Cursor,
+        spec: &mut PatternSpec,
+        entries: bool,
+    ) -> R<()> {
         let kind = match kw {
             "checker" => PatternKind::Checker,
             "hexagon" => PatternKind::Hexagon,
@@ -151,7 +158,7 @@ impl Evaluator<'_> {
             _ => PatternKind::Dents,
         };
         spec.kind = Some(kind);
-        if kind.is_list() {
+        if kind.is_list() && entries {
             self.list_entries(c, spec)?;
         }
         Ok(())
