@@ -33,6 +33,7 @@ fn busy_scene() -> Scene {
         Some(Arc::new(Texture {
             pigment: checker,
             finish: Finish::default(),
+            ..Texture::default()
         })),
     );
     let mirror = Finish {

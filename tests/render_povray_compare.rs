@@ -27,7 +27,11 @@ fn checker(a: DVec3, b: DVec3, scale: f64) -> Pigment {
 }
 
 fn tex(pigment: Pigment, finish: Finish) -> Option<Arc<Texture>> {
-    Some(Arc::new(Texture { pigment, finish }))
+    Some(Arc::new(Texture {
+        pigment,
+        finish,
+        ..Texture::default()
+    }))
 }
 
 /// The scene of [`POV_SOURCE`].

@@ -305,6 +305,7 @@ mod tests {
                 transform: None,
             },
             finish: Finish::default(),
+            ..Texture::default()
         })
     }
 

@@ -49,6 +49,7 @@ const GLOBAL_ITEMS: &[&str] = &[
     "assumed_gamma",
     "max_trace_level",
     "adc_bailout",
+    "noise_generator",
 ];
 
 /// An out-of-range camera value.
@@ -391,6 +392,7 @@ impl Evaluator<'_> {
                     format!("`{kw}` is not implemented in rts yet"),
                 )
                 .into()),
+                Tok::Kw("noise_generator", span) => self.noise_generator(c, span),
                 other => Err(self.unexpected(c, &other, GLOBAL_ITEMS)),
             };
             if let Err(f) = r {

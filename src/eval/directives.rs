@@ -242,6 +242,7 @@ impl Evaluator<'_> {
                         Tok::Block(_, Value::Texture(t), _) => tex = (*t).clone(),
                         Tok::Block(_, Value::Pigment(p), _) => tex.pigment = (*p).clone(),
                         Tok::Block(_, Value::Finish(f), _) => tex.finish = *f,
+                        Tok::Block(_, Value::Normal(n), _) => tex.normal = Some((*n).clone()),
                         other => {
                             let e = self.unexpected(&c, &other, &["texture", "pigment", "finish"]);
                             self.report(e);

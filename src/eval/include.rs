@@ -9,7 +9,18 @@ use crate::span::{FileId, Span};
 use std::path::{Path, PathBuf};
 
 /// The built-in include files: name and text.
-pub const STDLIB: &[(&str, &str)] = &[("colors.inc", include_str!("../stdlib/colors.inc"))];
+pub const STDLIB: &[(&str, &str)] = &[
+    ("colors.inc", include_str!("../stdlib/colors.inc")),
+    ("consts.inc", include_str!("../stdlib/consts.inc")),
+    ("finish.inc", include_str!("../stdlib/finish.inc")),
+    ("glass.inc", include_str!("../stdlib/glass.inc")),
+    ("metals.inc", include_str!("../stdlib/metals.inc")),
+    ("shapes.inc", include_str!("../stdlib/shapes.inc")),
+    ("shapes2.inc", include_str!("../stdlib/shapes2.inc")),
+    ("stones.inc", include_str!("../stdlib/stones.inc")),
+    ("textures.inc", include_str!("../stdlib/textures.inc")),
+    ("woods.inc", include_str!("../stdlib/woods.inc")),
+];
 
 /// Why a source file could not be loaded.
 #[derive(Debug)]

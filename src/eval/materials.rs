@@ -2,15 +2,20 @@
 
 use super::cursor::{Cursor, Tok};
 use super::objects::TRANSFORMS;
+use super::patterns::{default_map, PatternSpec, MODIFIERS, PATTERNS};
 use super::value::Value;
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
-use crate::scene::{Colour, Finish, Pattern, Pigment, Reflection, Texture, Transform};
+use crate::scene::{
+    compose, Colour, Finish, ImageMap, Interior, Mapped, Normal, Pattern, PatternKind, PatternMap,
+    Pigment, Reflection, Texture, Transform,
+};
 use glam::DVec3;
 use std::sync::Arc;
 
 const TEXTURE_ITEMS: &[&str] = &[
     "pigment",
+    "normal",
     "finish",
     "translate",
     "rotate",
@@ -21,7 +26,32 @@ const TEXTURE_ITEMS: &[&str] = &[
 const PIGMENT_ITEMS: &[&str] = &[
     "color",
     "rgb",
+    "color_map",
+    "colour_map",
+    "pigment_map",
+    "image_map",
     "checker",
+    "hexagon",
+    "brick",
+    "gradient",
+    "radial",
+    "onion",
+    "leopard",
+    "spotted",
+    "bozo",
+    "marble",
+    "wood",
+    "granite",
+    "agate",
+    "wrinkles",
+    "ripples",
+    "waves",
+    "turbulence",
+    "octaves",
+    "omega",
+    "lambda",
+    "frequency",
+    "phase",
     "translate",
     "rotate",
     "scale",
@@ -38,55 +68,89 @@ const FINISH_ITEMS: &[&str] = &[
     "roughness",
     "metallic",
     "reflection",
+    "emission",
+    "conserve_energy",
+    "crand",
 ];
 const REFLECTION_ITEMS: &[&str] = &["fresnel", "falloff", "metallic"];
-/// Pattern keywords of POV-Ray that a later release implements.
-const LATER_PATTERNS: &[&str] = &[
-    "hexagon",
-    "brick",
-    "gradient",
-    "radial",
-    "onion",
-    "leopard",
-    "spotted",
-    "bozo",
-    "marble",
-    "wood",
-    "granite",
-    "agate",
-    "wrinkles",
-    "ripples",
-    "waves",
+const NORMAL_ITEMS: &[&str] = &[
     "bumps",
     "dents",
-    "image_map",
-    "color_map",
-    "colour_map",
+    "ripples",
+    "waves",
+    "wrinkles",
+    "bump_size",
+    "gradient",
+    "checker",
+    "hexagon",
+    "brick",
+    "onion",
+    "leopard",
+    "granite",
+    "agate",
+    "marble",
+    "wood",
+    "radial",
+    "spotted",
+    "bozo",
     "turbulence",
     "octaves",
     "omega",
     "lambda",
     "frequency",
     "phase",
+    "translate",
+    "rotate",
+    "scale",
+    "matrix",
+    "transform",
+];
+const INTERIOR_ITEMS: &[&str] = &[
+    "ior",
+    "fade_distance",
+    "fade_power",
+    "fade_color",
+    "fade_colour",
+    "caustics",
+    "dispersion",
+    "dispersion_samples",
+];
+const IMAGE_MAP_ITEMS: &[&str] = &[
+    "png",
+    "jpeg",
+    "exr",
+    "map_type",
+    "interpolate",
+    "once",
+    "filter",
+    "transmit",
     "uv_mapping",
-    "warp",
 ];
-const LATER_FINISH: &[&str] = &[
-    "conserve_energy",
-    "emission",
-    "irid",
-    "crand",
-    "reflection_exponent",
-    "fresnel",
-];
+/// Pattern keywords of POV-Ray that a later release implements.
+const LATER_PATTERNS: &[&str] = &["warp"];
+const LATER_FINISH: &[&str] = &["irid", "reflection_exponent", "fresnel"];
 
 fn compose_pattern(p: &mut Pigment, t: &Transform) {
-    let cur = p
-        .transform
-        .as_deref()
-        .copied()
-        .unwrap_or(Transform::IDENTITY);
-    p.transform = Some(Arc::new(cur.then(t)));
+    compose(&mut p.transform, t);
+}
+
+/// Lays texture `top` over the texture an object already has (`texture { A }
+/// texture { B }`: B over A, as POV-Ray links them).
+pub(crate) fn layer_texture(below: Option<&Arc<Texture>>, top: Arc<Texture>) -> Arc<Texture> {
+    let Some(below) = below else { return top };
+    let mut t = (*top).clone();
+    fn set_bottom(t: &mut Texture, below: &Arc<Texture>) {
+        match &mut t.under {
+            Some(u) => {
+                let mut inner = (**u).clone();
+                set_bottom(&mut inner, below);
+                *u = Arc::new(inner);
+            }
+            None => t.under = Some(below.clone()),
+        }
+    }
+    set_bottom(&mut t, below);
+    Arc::new(t)
 }
 
 impl Evaluator<'_> {
@@ -110,11 +174,15 @@ impl Evaluator<'_> {
                     tex.finish = *f;
                     Ok(())
                 }
+                Tok::Block(_, Value::Normal(n), _) => {
+                    tex.normal = Some((*n).clone());
+                    Ok(())
+                }
                 Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => self
                     .transform_kw(kw, span, c)
-                    .map(|t| compose_pattern(&mut tex.pigment, &t)),
+                    .map(|t| tex.transform_patterns(&t)),
                 Tok::Block(_, Value::Transform(t), _) => {
-                    compose_pattern(&mut tex.pigment, &t);
+                    tex.transform_patterns(&t);
                     Ok(())
                 }
                 other => Err(self.unexpected(c, &other, TEXTURE_ITEMS)),
@@ -126,15 +194,28 @@ impl Evaluator<'_> {
         Ok(tex)
     }
 
-    /// `pigment { COLOUR | checker A, B | Name … transforms }`.
+    /// `pigment { COLOUR | PATTERN [entries] [color_map/pigment_map] modifiers |
+    /// image_map { … } | Name … transforms }`.
     pub(crate) fn pigment(&mut self, c: &mut Cursor) -> R<Pigment> {
         let mut pig = self.default_texture.pigment.clone();
         let mut pattern_given = false;
+        let mut spec = self.new_spec();
+        let mut modified = false;
+        let mut uv_mapping = false;
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
                 Tok::Val(Value::Pigment(p), _) if !pattern_given => {
                     pig = (*p).clone();
                     pattern_given = true;
+                    if let Pattern::Mapped(m) = &pig.pattern {
+                        spec.kind = Some(m.kind);
+                        spec.mods = m.mods;
+                        spec.wave = Some(m.mods.wave);
+                        match &m.map {
+                            PatternMap::List(l) => spec.list = l.clone(),
+                            other => spec.map = Some(other.clone()),
+                        }
+                    }
                     Ok(())
                 }
                 Tok::Val(v @ (Value::Colour(_) | Value::Vector(_) | Value::Float(_)), span)
@@ -148,18 +229,38 @@ impl Evaluator<'_> {
                         }
                     })
                 }
-                Tok::Kw("checker", span) => {
+                Tok::Block("image_map", Value::Pigment(p), span) => {
                     if pattern_given {
                         Err(self.second_pattern(span))
                     } else {
                         pattern_given = true;
-                        self.checker(c).map(|p| {
-                            pig = Pigment {
-                                pattern: p,
-                                transform: None,
-                            }
-                        })
+                        pig = (*p).clone();
+                        Ok(())
                     }
+                }
+                Tok::Kw(kw, span) if PATTERNS.contains(&kw) => {
+                    if pattern_given {
+                        Err(self.second_pattern(span))
+                    } else {
+                        pattern_given = true;
+                        modified = true;
+                        pig.transform = None;
+                        self.pattern_kw(kw, c, &mut spec, true)
+                    }
+                }
+                Tok::Kw(kw, _) if MODIFIERS.contains(&kw) => {
+                    modified = true;
+                    self.pattern_modifier(kw, c, &mut spec).map(|_| ())
+                }
+                Tok::Block(_, Value::ColourMap(m), _) | Tok::Val(Value::ColourMap(m), _) => {
+                    modified = true;
+                    spec.map = Some(PatternMap::Colours(m));
+                    Ok(())
+                }
+                Tok::Block(_, Value::PigmentMap(m), _) | Tok::Val(Value::PigmentMap(m), _) => {
+                    modified = true;
+                    spec.map = Some(PatternMap::Pigments(m));
+                    Ok(())
                 }
                 Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => self
                     .transform_kw(kw, span, c)
@@ -171,13 +272,17 @@ impl Evaluator<'_> {
                 Tok::Kw("quick_color" | "quick_colour", _) => {
                     self.take_colour(c, "a colour").map(|_| ())
                 }
+                Tok::Kw("uv_mapping", _) => {
+                    uv_mapping = true;
+                    Ok(())
+                }
                 Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_PATTERNS.contains(&kw) => {
                     Err(Diagnostic::error(
                         codes::UNSUPPORTED,
                         span,
                         format!("`{kw}` in pigments is not implemented in rts yet"),
                     )
-                    .with_help("this release supports solid colours and `checker`")
+                    .with_help("see docs/language.md for the patterns this release supports")
                     .into())
                 }
                 Tok::Val(Value::Poison, _) => Err(Fail::silent()),
@@ -194,7 +299,319 @@ impl Evaluator<'_> {
                 self.report(f);
             }
         }
+        if uv_mapping {
+            match &pig.pattern {
+                Pattern::Image(im) => {
+                    let mut im = (**im).clone();
+                    im.uv_mapping = true;
+                    pig.pattern = Pattern::Image(Arc::new(im));
+                }
+                _ => self.report(
+                    Diagnostic::error(
+                        codes::UNSUPPORTED,
+                        c.span,
+                        "`uv_mapping` is implemented for `image_map` pigments only",
+                    )
+                    .with_help("remove `uv_mapping`, or use an image_map")
+                    .into(),
+                ),
+            }
+        }
+        if modified {
+            if let Some(kind) = spec.kind {
+                pig.pattern = self.build_pattern(kind, &mut spec);
+            } else if let Some(map) = spec.map.take() {
+                // A map with no pattern: POV-Ray's default pattern is `bozo`... but a
+                // lone map is most often a typo; use gradient-free bozo as POV does.
+                pig.pattern = Pattern::Mapped(Box::new(Mapped {
+                    kind: PatternKind::Bozo,
+                    mods: spec.final_mods(),
+                    map,
+                }));
+            }
+        }
         Ok(pig)
+    }
+
+    fn build_pattern(&mut self, kind: PatternKind, spec: &mut PatternSpec) -> Pattern {
+        let mods = spec.final_mods();
+        if kind == PatternKind::Checker && mods.turbulence == glam::DVec3::ZERO {
+            let mut l = std::mem::take(&mut spec.list);
+            Self::complete_list(&kind, &mut l);
+            let b = l.pop().expect("two entries");
+            let a = l.pop().expect("two entries");
+            return Pattern::Checker(Box::new([a, b]));
+        }
+        let map = if kind.is_list() {
+            let mut l = std::mem::take(&mut spec.list);
+            Self::complete_list(&kind, &mut l);
+            PatternMap::List(l)
+        } else {
+            spec.map.take().unwrap_or_else(|| default_map(&kind))
+        };
+        Pattern::Mapped(Box::new(Mapped { kind, mods, map }))
+    }
+
+    /// `normal { PATTERN [AMOUNT] [bump_size AMOUNT] modifiers transforms | Name }`.
+    pub(crate) fn normal(&mut self, c: &mut Cursor) -> R<Normal> {
+        let mut n = match c.peek() {
+            Some(Tok::Val(Value::Normal(_), _)) => match c.next() {
+                Some(Tok::Val(Value::Normal(x), _)) => Some((*x).clone()),
+                _ => unreachable!(),
+            },
+            Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
+            _ => None,
+        };
+        let mut spec = self.new_spec();
+        let mut bump = n.as_ref().map_or(0.5, |x| x.bump_size);
+        let mut transform = n.as_ref().and_then(|x| x.transform.clone());
+        if let Some(x) = &n {
+            spec.kind = Some(x.kind);
+            spec.mods = x.mods;
+            spec.wave = Some(x.mods.wave);
+        }
+        while let Some(tok) = c.next() {
+            let r: R<()> = match tok {
+                Tok::Kw(kw, _) if PATTERNS.contains(&kw) => {
+                    let r = self.pattern_kw(kw, c, &mut spec, false);
+                    if r.is_ok() && c.value_next() {
+                        self.take_float(c, "the bump size").map(|x| bump = x)
+                    } else {
+                        r
+                    }
+                }
+                Tok::Kw("bump_size", _) => self.take_float(c, "the bump size").map(|x| bump = x),
+                Tok::Kw(kw, _) if MODIFIERS.contains(&kw) => {
+                    self.pattern_modifier(kw, c, &mut spec).map(|_| ())
+                }
+                Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => self
+                    .transform_kw(kw, span, c)
+                    .map(|t| compose(&mut transform, &t)),
+                Tok::Block(_, Value::Transform(t), _) => {
+                    compose(&mut transform, &t);
+                    Ok(())
+                }
+                Tok::Block(_, Value::ColourMap(_) | Value::PigmentMap(_), _) => Ok(()),
+                Tok::Val(Value::Poison, _) => Err(Fail::silent()),
+                other => Err(self.unexpected(c, &other, NORMAL_ITEMS)),
+            };
+            if let Err(f) = r {
+                self.report(f);
+            }
+        }
+        let kind = spec.kind.unwrap_or(PatternKind::Bumps);
+        let mods = spec.final_mods();
+        n = Some(Normal {
+            kind,
+            mods,
+            bump_size: if spec.kind.is_none() { 0.0 } else { bump },
+            transform,
+        });
+        Ok(n.expect("set"))
+    }
+
+    /// `interior { [Name] ior fade_distance fade_power fade_color caustics dispersion }`.
+    pub(crate) fn interior(&mut self, c: &mut Cursor) -> R<Interior> {
+        let mut i = match c.peek() {
+            Some(Tok::Val(Value::Interior(_), _)) => match c.next() {
+                Some(Tok::Val(Value::Interior(x), _)) => *x,
+                _ => unreachable!(),
+            },
+            Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
+            _ => Interior::default(),
+        };
+        while let Some(tok) = c.next() {
+            let r: R<()> = match tok {
+                Tok::Kw("ior", span) => c.once("ior", span).and_then(|_| {
+                    let (v, s) = c.value("the index of refraction")?;
+                    let x = self.to_float(&v, s)?;
+                    if x <= 0.0 {
+                        return Err(Diagnostic::error(
+                            codes::OUT_OF_RANGE,
+                            s,
+                            format!("ior must be positive, found {x}"),
+                        )
+                        .with_help("1.0 is air, 1.33 water, 1.5 glass")
+                        .into());
+                    }
+                    i.ior = x;
+                    Ok(())
+                }),
+                Tok::Kw("fade_distance", _) => self
+                    .take_float(c, "the fade distance")
+                    .map(|x| i.fade_distance = x.max(0.0)),
+                Tok::Kw("fade_power", _) => self
+                    .take_float(c, "the fade power")
+                    .map(|x| i.fade_power = x.max(0.0)),
+                Tok::Kw("fade_color" | "fade_colour", _) => self
+                    .take_colour(c, "the fade colour")
+                    .map(|x| i.fade_colour = x.rgb),
+                Tok::Kw("caustics" | "dispersion" | "dispersion_samples", _) => {
+                    // Accepted as in POV-Ray; they need photons or spectral rays.
+                    self.take_float(c, "a number").map(|_| ())
+                }
+                other => Err(self.unexpected(c, &other, INTERIOR_ITEMS)),
+            };
+            if let Err(f) = r {
+                self.report(f);
+            }
+        }
+        Ok(i)
+    }
+
+    /// `image_map { png "file" map_type N interpolate N once filter/transmit … }`.
+    pub(crate) fn image_map(&mut self, c: &mut Cursor) -> R<Pigment> {
+        let mut file: Option<(String, crate::span::Span)> = None;
+        let mut im = ImageMap {
+            width: 1,
+            height: 1,
+            pixels: vec![Colour::BLACK],
+            map_type: 0,
+            interpolate: false,
+            once: false,
+            uv_mapping: false,
+        };
+        let mut filter_all: Option<f64> = None;
+        let mut transmit_all: Option<f64> = None;
+        while let Some(tok) = c.next() {
+            let r: R<()> = match tok {
+                Tok::Kw("png" | "jpeg" | "exr", _) => {
+                    c.value("the image's file name").and_then(|(v, s)| match v {
+                        Value::Str(name) => {
+                            file = Some((name.to_string(), s));
+                            Ok(())
+                        }
+                        other => Err(Diagnostic::error(
+                            codes::TYPE_MISMATCH,
+                            s,
+                            format!("expected a file name, found {}", other.kind()),
+                        )
+                        .into()),
+                    })
+                }
+                Tok::Val(Value::Str(name), s) if file.is_none() => {
+                    file = Some((name.to_string(), s));
+                    Ok(())
+                }
+                Tok::Kw("map_type", _) => self
+                    .take_float(c, "the map type (0, 1 or 2)")
+                    .map(|x| im.map_type = x as u8),
+                Tok::Kw("interpolate", _) => self
+                    .take_float(c, "the interpolation (2 bilinear)")
+                    .map(|x| im.interpolate = x >= 2.0),
+                Tok::Kw("once", _) => {
+                    im.once = true;
+                    Ok(())
+                }
+                Tok::Kw("uv_mapping", _) => {
+                    im.uv_mapping = true;
+                    Ok(())
+                }
+                Tok::Kw(kw @ ("filter" | "transmit"), _) => {
+                    if let Some(Tok::Kw("all", _)) = c.peek() {
+                        c.next();
+                    }
+                    self.take_float(c, "the amount").map(|x| {
+                        if kw == "filter" {
+                            filter_all = Some(x)
+                        } else {
+                            transmit_all = Some(x)
+                        }
+                    })
+                }
+                other => Err(self.unexpected(c, &other, IMAGE_MAP_ITEMS)),
+            };
+            if let Err(f) = r {
+                self.report(f);
+            }
+        }
+        let Some((name, span)) = file else {
+            return Err(Diagnostic::error(
+                codes::MISSING_VALUE,
+                c.span,
+                "`image_map` needs a file: `image_map { png \"name.png\" }`",
+            )
+            .into());
+        };
+        let path = self.resolve_image(&name, span)?;
+        let img = image::open(&path).map_err(|e| {
+            Fail::from(
+                Diagnostic::error(
+                    codes::FILE_NOT_FOUND,
+                    span,
+                    format!("cannot read image `{name}`: {e}"),
+                )
+                .with_help("image_map reads PNG, JPEG and OpenEXR files"),
+            )
+        })?;
+        let rgba = img.to_rgba32f();
+        im.width = rgba.width().max(1);
+        im.height = rgba.height().max(1);
+        im.pixels = rgba
+            .pixels()
+            .map(|p| {
+                // POV-Ray 3.7 uses the stored values as they are (measured: a
+                // PNG without gamma information is not decoded from sRGB).
+                let lin = f64::from;
+                Colour {
+                    rgb: glam::DVec3::new(lin(p[0]), lin(p[1]), lin(p[2])),
+                    filter: filter_all.unwrap_or(0.0),
+                    transmit: transmit_all.unwrap_or(1.0 - f64::from(p[3])),
+                }
+            })
+            .collect();
+        Ok(Pigment {
+            pattern: Pattern::Image(Arc::new(im)),
+            transform: None,
+        })
+    }
+
+    /// The path of image file `name`: next to the including file, the scene, or
+    /// in a `-I` folder, within the folders the scene may read.
+    fn resolve_image(&self, name: &str, span: crate::span::Span) -> R<std::path::PathBuf> {
+        let here = self.include_stack.last().copied();
+        let mut dirs: Vec<std::path::PathBuf> = Vec::new();
+        if let Some(d) = here.and_then(|h| self.sources.get(h).dir()) {
+            dirs.push(d.to_path_buf());
+        }
+        if let Some(d) = &self.scene_dir {
+            dirs.push(d.clone());
+        }
+        dirs.extend(self.options.access.include_dirs.iter().cloned());
+        if dirs.is_empty() {
+            dirs.push(std::path::PathBuf::from("."));
+        }
+        for dir in &dirs {
+            let path = dir.join(name);
+            if !path.is_file() {
+                continue;
+            }
+            let canon = path.canonicalize().unwrap_or(path.clone());
+            if !self
+                .options
+                .access
+                .permits(&canon, self.scene_dir.as_deref())
+            {
+                return Err(Diagnostic::error(
+                    codes::FILE_NOT_ALLOWED,
+                    span,
+                    format!(
+                        "`{}` is outside the folders this scene may read",
+                        canon.display()
+                    ),
+                )
+                .with_help("allow more with --allow-path DIR")
+                .into());
+            }
+            return Ok(canon);
+        }
+        Err(Diagnostic::error(
+            codes::FILE_NOT_FOUND,
+            span,
+            format!("cannot find image `{name}`"),
+        )
+        .with_help("image files are looked up next to the scene and in -I folders")
+        .into())
     }
 
     fn second_pattern(&self, span: crate::span::Span) -> Fail {
@@ -205,50 +622,6 @@ impl Evaluator<'_> {
         )
         .with_help("remove the earlier colour or pattern")
         .into()
-    }
-
-    /// The two entries after `checker` (colours or pigments); POV-Ray's defaults are
-    /// blue and green.
-    fn checker(&mut self, c: &mut Cursor) -> R<Pattern> {
-        let mut entries: Vec<Pigment> = Vec::new();
-        while entries.len() < 2 {
-            let solid = |col: Colour| Pigment {
-                pattern: Pattern::Solid(col),
-                transform: None,
-            };
-            match c.peek() {
-                Some(Tok::Val(Value::Colour(_) | Value::Vector(_) | Value::Float(_), _)) => {
-                    let col = self.take_colour(c, "a colour")?;
-                    entries.push(solid(col));
-                }
-                Some(Tok::Block(_, Value::Pigment(_), _)) => {
-                    if let Some(Tok::Block(_, Value::Pigment(p), _)) = c.next() {
-                        entries.push((*p).clone());
-                    }
-                }
-                Some(Tok::Val(Value::Pigment(_), _)) => {
-                    if let Some(Tok::Val(Value::Pigment(p), _)) = c.next() {
-                        entries.push((*p).clone());
-                    }
-                }
-                Some(Tok::Val(Value::Poison, _)) => {
-                    c.next();
-                    return Err(Fail::silent());
-                }
-                _ => break,
-            }
-            c.comma();
-        }
-        let defaults = [Colour::rgb(0.0, 0.0, 1.0), Colour::rgb(0.0, 1.0, 0.0)];
-        while entries.len() < 2 {
-            entries.push(Pigment {
-                pattern: Pattern::Solid(defaults[entries.len()]),
-                transform: None,
-            });
-        }
-        let b = entries.pop().expect("two entries");
-        let a = entries.pop().expect("two entries");
-        Ok(Pattern::Checker(Box::new([a, b])))
     }
 
     /// `finish { [Name] ambient … diffuse … phong … reflection … }`.
@@ -325,6 +698,20 @@ impl Evaluator<'_> {
                 c.once("metallic", span)?;
                 f.metallic = self.take_optional_float(c, 1.0)?;
             }
+            Tok::Kw("emission", span) => {
+                c.once("emission", span)?;
+                let (v, s) = c.value("the emission amount or colour")?;
+                f.emission = match v {
+                    Value::Float(x) => DVec3::splat(nonneg(self, x, s, "emission")?),
+                    other => self.to_colour(&other, s)?.rgb,
+                };
+            }
+            Tok::Kw("conserve_energy", _) => {
+                f.conserve_energy = self.take_optional_float(c, 1.0)? != 0.0;
+            }
+            Tok::Kw("crand", _) => {
+                f.crand = self.take_float(c, "the crand amount")?;
+            }
             Tok::Kw("reflection", span) => {
                 c.once("reflection", span)?;
                 let col = self.take_colour(c, "the reflection amount or colour")?;
@@ -367,13 +754,9 @@ impl Evaluator<'_> {
         }
         while let Some(tok) = c.next() {
             let res: R<()> = match tok {
-                Tok::Kw("fresnel", span) => Err(Diagnostic::error(
-                    codes::UNSUPPORTED,
-                    span,
-                    "`fresnel` reflection is not implemented in rts yet",
-                )
-                .with_help("it needs `interior { ior … }`, which comes with refraction")
-                .into()),
+                Tok::Kw("fresnel", _) => self
+                    .take_optional_float(c, 1.0)
+                    .map(|x| r.fresnel = x != 0.0),
                 Tok::Kw("falloff", _) => self
                     .take_float(c, "the falloff exponent")
                     .map(|x| r.falloff = x),

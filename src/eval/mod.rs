@@ -17,6 +17,7 @@ mod items;
 mod lights;
 mod materials;
 mod objects;
+mod patterns;
 mod scope;
 pub mod value;
 

@@ -20,6 +20,8 @@ pub(crate) const OBJECT_MODIFIERS: &[&str] = &[
     "texture",
     "pigment",
     "finish",
+    "normal",
+    "interior",
     "no_shadow",
     "no_image",
     "no_reflection",
@@ -187,17 +189,43 @@ impl Evaluator<'_> {
                 apply_transform(obj, &t);
             }
             Tok::Block(_, Value::Transform(t), _) => apply_transform(obj, &t),
-            Tok::Block(_, Value::Texture(t), _) => obj.texture = Some(attach(obj, (*t).clone())),
+            Tok::Block(_, Value::Texture(t), _) => {
+                let top = attach(obj, (*t).clone());
+                obj.texture = Some(super::materials::layer_texture(obj.texture.as_ref(), top));
+            }
+            Tok::Block(_, Value::Interior(i), _) => obj.interior = Some(i),
+            Tok::Block(_, Value::Normal(n), _) => {
+                let mut tex = match obj.texture.as_deref() {
+                    Some(t) => t.clone(),
+                    None => (*attach(obj, (*self.default_texture).clone())).clone(),
+                };
+                let mut tmp = Texture {
+                    normal: Some((*n).clone()),
+                    ..Texture::default()
+                };
+                if let Some(ot) = obj.transform.as_deref() {
+                    tmp.transform_patterns(&Transform {
+                        matrix: ot.inverse,
+                        inverse: ot.matrix,
+                    });
+                }
+                tex.normal = tmp.normal;
+                obj.texture = Some(Arc::new(tex));
+            }
             Tok::Block(_, Value::Pigment(p), _) => {
                 let finish = match obj.texture.as_deref() {
                     Some(t) => t.finish,
                     None => self.default_texture.finish,
                 };
+                let normal = obj.texture.as_deref().and_then(|t| t.normal.clone());
                 let tex = Texture {
                     pigment: (*p).clone(),
                     finish,
+                    ..Texture::default()
                 };
-                obj.texture = Some(attach(obj, tex));
+                let mut tex = (*attach(obj, tex)).clone();
+                tex.normal = normal;
+                obj.texture = Some(Arc::new(tex));
             }
             Tok::Block(_, Value::Finish(f), _) => {
                 let mut tex = match obj.texture.as_deref() {
@@ -363,17 +391,11 @@ fn apply_transform(obj: &mut Object, t: &Transform) {
 /// object's frame it is `object_from_world ∘ world_from_pattern`.
 fn attach(obj: &Object, mut tex: Texture) -> Arc<Texture> {
     if let Some(ot) = obj.transform.as_deref() {
-        let pattern = tex
-            .pigment
-            .transform
-            .as_deref()
-            .copied()
-            .unwrap_or(Transform::IDENTITY);
         let inv = Transform {
             matrix: ot.inverse,
             inverse: ot.matrix,
         };
-        tex.pigment.transform = Some(Arc::new(pattern.then(&inv)));
+        tex.transform_patterns(&inv);
     }
     Arc::new(tex)
 }

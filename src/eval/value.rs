@@ -1,6 +1,8 @@
 //! Values of the language.
 
-use crate::scene::{Colour, Finish, Light, Object, Pigment, Reflection, Texture, Transform};
+use crate::scene::{
+    Colour, Finish, Interior, Light, Normal, Object, Pigment, Reflection, Texture, Transform,
+};
 use crate::syntax::ast::MacroDef;
 use glam::DVec3;
 use std::rc::Rc;
@@ -135,6 +137,14 @@ pub enum Value {
     Transform(Arc<Transform>),
     /// `reflection { … }` (only meaningful inside a finish).
     Reflection(Reflection),
+    /// A normal (bump pattern).
+    Normal(Arc<Normal>),
+    /// An interior.
+    Interior(Arc<Interior>),
+    /// A colour map.
+    ColourMap(Arc<Vec<(f64, Colour)>>),
+    /// A pigment map.
+    PigmentMap(Arc<Vec<(f64, Pigment)>>),
     /// A macro.
     Macro(Rc<MacroDef>),
     /// The value of something whose evaluation failed (already reported); using it
@@ -164,6 +174,10 @@ impl Value {
             Value::Light(_) => "a light source",
             Value::Transform(_) => "a transform",
             Value::Reflection(_) => "a reflection block",
+            Value::Normal(_) => "a normal",
+            Value::Interior(_) => "an interior",
+            Value::ColourMap(_) => "a colour map",
+            Value::PigmentMap(_) => "a pigment map",
             Value::Macro(_) => "a macro",
             Value::Poison => "an erroneous value",
         }

@@ -82,7 +82,8 @@ pub fn incident(
 }
 
 /// How much light passes from `p` (geometric normal `geo_n`) along unit `dir` for
-/// `dist`: one for a clear path, zero when an object blocks it.
+/// `dist`: one for a clear path, zero when an opaque object blocks it, the product
+/// of the filter/transmit colours of transparent surfaces on the way otherwise.
 ///
 /// This is the single place shadow rays are traced, so transparent shadows can
 /// replace it.
@@ -99,11 +100,8 @@ pub fn shadow(
         return DVec3::ONE;
     }
     ctx.stats.shadow += 1;
-    if world.occluded(&ray, eps, dist - eps) {
-        DVec3::ZERO
-    } else {
-        DVec3::ONE
-    }
+    // Filtered by transparent surfaces on the way (0 behind opaque ones).
+    super::shade::shadow_filter(world, &ray, eps, dist - eps)
 }
 
 /// POV-Ray's distance fading: `2 / (1 + (d / fade_distance)^fade_power)`, or 1 when

@@ -1,7 +1,12 @@
-//! Pigment evaluation.
+//! Pigment and normal evaluation: patterns, colour and pigment maps, image maps
+//! and bump perturbation.
 
-use crate::scene::{Colour, Pattern, Pigment};
-use glam::DVec3;
+mod image_map;
+pub mod noise;
+pub mod patterns;
+
+use crate::scene::{Colour, Mapped, Normal, Pattern, PatternMap, Pigment};
+use glam::{DMat4, DVec2, DVec3};
 
 /// Added to each coordinate before flooring in `checker`. POV-Ray 3.7 shows the
 /// same bias: a point 3e-10 below an integer plane still takes the lower cube, one
@@ -22,20 +27,164 @@ pub fn checker_index(p: DVec3) -> usize {
 /// The colour of `pigment` at point `p`, given in the space the pigment's own
 /// transform is relative to (the texture's space).
 pub fn evaluate(pigment: &Pigment, p: DVec3) -> Colour {
+    evaluate_uv(pigment, p, None)
+}
+
+/// As [`evaluate`], with the surface's uv coordinates for `uv_mapping`.
+pub fn evaluate_uv(pigment: &Pigment, p: DVec3, uv: Option<DVec2>) -> Colour {
     let p = match &pigment.transform {
         Some(t) => t.inverse.transform_point3(p),
         None => p,
     };
     match &pigment.pattern {
         Pattern::Solid(c) => *c,
-        Pattern::Checker(pair) => evaluate(&pair[checker_index(p)], p),
+        Pattern::Checker(pair) => evaluate_uv(&pair[checker_index(p)], p, uv),
+        Pattern::Mapped(m) => mapped(m, p, uv),
+        Pattern::Image(im) => image_map::lookup(im, p, uv),
+    }
+}
+
+fn mapped(m: &Mapped, p: DVec3, uv: Option<DVec2>) -> Colour {
+    if m.kind.is_list() {
+        let q = patterns::warp(p, &m.mods);
+        let i = patterns::list_index(&m.kind, q);
+        return match &m.map {
+            PatternMap::List(l) if !l.is_empty() => evaluate_uv(&l[i.min(l.len() - 1)], p, uv),
+            _ => Colour::BLACK,
+        };
+    }
+    let v = patterns::value(&m.kind, p, &m.mods);
+    match &m.map {
+        PatternMap::Colours(entries) => colour_at(entries, v),
+        PatternMap::Pigments(entries) => {
+            if entries.is_empty() {
+                return Colour::BLACK;
+            }
+            let i = entries.partition_point(|(x, _)| *x <= v);
+            if i == 0 {
+                return evaluate_uv(&entries[0].1, p, uv);
+            }
+            if i == entries.len() {
+                return evaluate_uv(&entries[i - 1].1, p, uv);
+            }
+            let (v0, a) = &entries[i - 1];
+            let (v1, b) = &entries[i];
+            let ca = evaluate_uv(a, p, uv);
+            if v1 <= v0 {
+                return ca;
+            }
+            let cb = evaluate_uv(b, p, uv);
+            mix(ca, cb, (v - v0) / (v1 - v0))
+        }
+        PatternMap::List(l) => l
+            .first()
+            .map_or(Colour::BLACK, |pig| evaluate_uv(pig, p, uv)),
+    }
+}
+
+fn mix(a: Colour, b: Colour, t: f64) -> Colour {
+    Colour {
+        rgb: a.rgb + (b.rgb - a.rgb) * t,
+        filter: a.filter + (b.filter - a.filter) * t,
+        transmit: a.transmit + (b.transmit - a.transmit) * t,
+    }
+}
+
+/// The colour a sorted `color_map` gives value `v`: the first entry below the
+/// first value, the last above the last, linear blends between.
+pub fn colour_at(entries: &[(f64, Colour)], v: f64) -> Colour {
+    if entries.is_empty() {
+        return Colour::BLACK;
+    }
+    let i = entries.partition_point(|(x, _)| *x <= v);
+    if i == 0 {
+        return entries[0].1;
+    }
+    if i == entries.len() {
+        return entries[i - 1].1;
+    }
+    let (v0, a) = entries[i - 1];
+    let (v1, b) = entries[i];
+    if v1 <= v0 {
+        return a;
+    }
+    mix(a, b, (v - v0) / (v1 - v0))
+}
+
+/// How strongly the slope of a normal pattern tilts the normal per unit of
+/// `bump_size`. Fitted so each pattern's shading contrast (standard deviation of a
+/// lit plane) matches POV-Ray 3.7; for `gradient x 0.5` POV-Ray tilts the normal
+/// by 0.06, which gives the generic value 0.12.
+fn bump_gain(kind: &crate::scene::PatternKind) -> f64 {
+    use crate::scene::PatternKind as K;
+    match kind {
+        K::Bumps | K::Bozo => 0.8,
+        K::Dents => 0.2,
+        K::Ripples => 0.36,
+        K::Waves => 0.52,
+        K::Wrinkles => 0.55,
+        _ => 0.12,
+    }
+}
+
+/// The shading normal `n` (unit, world space, facing the viewer) perturbed by
+/// `normal` at world point `p`; `texture_from_world` maps world points into the
+/// texture's space. As in POV-Ray the normal leans against the pattern's slope on
+/// the side the surface is seen from.
+pub fn perturb(normal: &Normal, n: DVec3, p: DVec3, texture_from_world: Option<&DMat4>) -> DVec3 {
+    if normal.bump_size == 0.0 {
+        return n;
+    }
+    let f = |q: DVec3| {
+        let t = texture_from_world.map_or(q, |m| m.transform_point3(q));
+        let t = match &normal.transform {
+            Some(x) => x.inverse.transform_point3(t),
+            None => t,
+        };
+        if normal.kind.is_list() {
+            patterns::list_index(&normal.kind, patterns::warp(t, &normal.mods)) as f64
+        } else {
+            patterns::height(&normal.kind, t, &normal.mods)
+        }
+    };
+    // Central differences in world space, with a step relative to the pattern's
+    // scale so tiny and huge patterns both resolve.
+    let scale = texture_from_world
+        .map(|m| m.transform_vector3(DVec3::ONE).length() / 3f64.sqrt())
+        .unwrap_or(1.0)
+        * normal
+            .transform
+            .as_ref()
+            .map(|x| x.inverse.transform_vector3(DVec3::ONE).length() / 3f64.sqrt())
+            .unwrap_or(1.0);
+    let h = 1e-4 / scale.max(1e-12);
+    let mut g = DVec3::ZERO;
+    for (i, axis) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {
+        g[i] = (f(p + axis * h) - f(p - axis * h)) / (2.0 * h);
+    }
+    // The slope in the pattern's own units.
+    let g = g / scale.max(1e-12);
+    let tangential = g - g.dot(n) * n;
+    // Ripples and waves keep their depth at any frequency, as in POV-Ray.
+    let freq = match normal.kind {
+        crate::scene::PatternKind::Ripples | crate::scene::PatternKind::Waves => {
+            normal.mods.frequency.abs().max(1e-9)
+        }
+        _ => 1.0,
+    };
+    let out = n - normal.bump_size * bump_gain(&normal.kind) / freq * tangential;
+    let len = out.length();
+    if len > 0.0 && len.is_finite() {
+        out / len
+    } else {
+        n
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::Transform;
+    use crate::scene::{PatternKind, PatternMods, Transform};
     use std::sync::Arc;
 
     fn solid(r: f64, g: f64, b: f64) -> Pigment {
@@ -68,5 +217,47 @@ mod tests {
         };
         assert_eq!(evaluate(&pig, DVec3::new(1.5, 0.5, 0.5)).rgb, DVec3::X);
         assert_eq!(evaluate(&pig, DVec3::new(2.5, 0.5, 0.5)).rgb, DVec3::Y);
+    }
+
+    #[test]
+    fn colour_map_blends_and_clamps() {
+        let e = vec![
+            (0.2, Colour::rgb(0.0, 0.0, 0.0)),
+            (0.6, Colour::rgb(1.0, 0.5, 0.0)),
+        ];
+        assert_eq!(colour_at(&e, 0.0).rgb, DVec3::ZERO);
+        assert_eq!(colour_at(&e, 0.9).rgb, DVec3::new(1.0, 0.5, 0.0));
+        assert!((colour_at(&e, 0.4).rgb - DVec3::new(0.5, 0.25, 0.0)).length() < 1e-12);
+    }
+
+    #[test]
+    fn gradient_pigment_with_map() {
+        let pig = Pigment {
+            pattern: Pattern::Mapped(Box::new(Mapped {
+                kind: PatternKind::Gradient(DVec3::X),
+                mods: PatternMods::default(),
+                map: PatternMap::Colours(Arc::new(vec![
+                    (0.0, Colour::rgb(0.0, 0.0, 0.0)),
+                    (1.0, Colour::rgb(1.0, 1.0, 1.0)),
+                ])),
+            })),
+            transform: None,
+        };
+        assert!((evaluate(&pig, DVec3::new(2.3, 0.0, 0.0)).rgb.x - 0.3).abs() < 1e-9);
+    }
+
+    #[test]
+    fn flat_pattern_keeps_normal_and_slope_tilts_it() {
+        let nrm = Normal {
+            kind: PatternKind::Gradient(DVec3::X),
+            mods: PatternMods::default(),
+            bump_size: 1.0,
+            transform: None,
+        };
+        let n = perturb(&nrm, DVec3::Y, DVec3::new(0.3, 0.0, 0.0), None);
+        assert!(n.x < 0.0 && (n.length() - 1.0).abs() < 1e-9);
+        let mut flat = nrm.clone();
+        flat.bump_size = 0.0;
+        assert_eq!(perturb(&flat, DVec3::Y, DVec3::ZERO, None), DVec3::Y);
     }
 }

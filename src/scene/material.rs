@@ -33,13 +33,41 @@ impl Colour {
     }
 }
 
-/// `texture { pigment { … } finish { … } }`.
+/// `texture { pigment { … } normal { … } finish { … } }`.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct Texture {
     /// The colour pattern.
     pub pigment: Pigment,
     /// How the surface responds to light.
     pub finish: Finish,
+    /// `normal { … }`: the bump pattern, if any.
+    pub normal: Option<Normal>,
+    /// Texture layers written before this one (`texture { A } texture { B }`: B's
+    /// `under` holds A): they show through where this layer's pigment has filter or
+    /// transmit.
+    pub under: Option<std::sync::Arc<Texture>>,
+}
+
+impl Texture {
+    /// Appends `t` to the transforms of every pattern of the texture (pigment and
+    /// normal), as `translate`/`rotate`/`scale` written after them do.
+    pub fn transform_patterns(&mut self, t: &Transform) {
+        compose(&mut self.pigment.transform, t);
+        if let Some(n) = &mut self.normal {
+            compose(&mut n.transform, t);
+        }
+        if let Some(u) = &mut self.under {
+            let mut inner = (**u).clone();
+            inner.transform_patterns(t);
+            *u = std::sync::Arc::new(inner);
+        }
+    }
+}
+
+/// `transform := transform ∘ t` (t applied after).
+pub fn compose(transform: &mut Option<Arc<Transform>>, t: &Transform) {
+    let cur = transform.as_deref().copied().unwrap_or(Transform::IDENTITY);
+    *transform = Some(Arc::new(cur.then(t)));
 }
 
 /// `pigment { PATTERN … [transforms] }`.
@@ -69,6 +97,173 @@ pub enum Pattern {
     Solid(Colour),
     /// `checker A, B`: unit cubes alternating between two pigments.
     Checker(Box<[Pigment; 2]>),
+    /// Any other pattern with its colour map, pigment map or list of pigments.
+    Mapped(Box<Mapped>),
+    /// `image_map { … }`.
+    Image(Arc<ImageMap>),
+}
+
+/// A pattern function with its modifiers and what its values map to.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mapped {
+    /// The pattern function.
+    pub kind: PatternKind,
+    /// Turbulence, wave form, frequency and phase.
+    pub mods: PatternMods,
+    /// What the values (or, for list patterns, the cell index) select.
+    pub map: PatternMap,
+}
+
+/// The pattern functions (`gradient`, `bozo`, …). List patterns (`hexagon`,
+/// `brick`) select an entry by index; the others give a value in [0, 1].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PatternKind {
+    /// `checker` (as a list pattern inside a normal or with pigment entries).
+    Checker,
+    /// `hexagon`: three-colour hexagonal tiling of the x-z plane.
+    Hexagon,
+    /// `brick`: bricks of `size` separated by `mortar`.
+    Brick {
+        /// `brick_size` (default <8, 3, 4.5>).
+        size: glam::DVec3,
+        /// `mortar` width (default 0.5).
+        mortar: f64,
+    },
+    /// `gradient <V>`: position along V.
+    Gradient(glam::DVec3),
+    /// `radial`: angle around the y axis.
+    Radial,
+    /// `onion`: distance from the origin.
+    Onion,
+    /// `leopard`: regular spots.
+    Leopard,
+    /// `bozo` and `spotted`: smooth noise.
+    Bozo,
+    /// `marble`: x plus turbulence, triangle wave.
+    Marble,
+    /// `wood`: distance from the z axis, triangle wave.
+    Wood,
+    /// `granite`: 1/f fractal noise.
+    Granite,
+    /// `agate`: turbulent sine bands.
+    Agate,
+    /// `wrinkles`: sum of noise octaves.
+    Wrinkles,
+    /// `ripples`: concentric waves from ten centres.
+    Ripples,
+    /// `waves`: like ripples, with varying frequency.
+    Waves,
+    /// `bumps`: noise (as a normal, bumps).
+    Bumps,
+    /// `dents`: as a normal, cubed noise dents.
+    Dents,
+}
+
+impl PatternKind {
+    /// Whether the pattern selects entries by index (`checker`, `hexagon`, `brick`).
+    pub fn is_list(&self) -> bool {
+        matches!(
+            self,
+            PatternKind::Checker | PatternKind::Hexagon | PatternKind::Brick { .. }
+        )
+    }
+}
+
+/// POV-Ray's wave forms, applied to the pattern value after frequency and phase.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Wave {
+    /// `ramp_wave`: the value modulo 1 (the default of most patterns).
+    Ramp,
+    /// `triangle_wave`: up from 0 to 1 and back down each unit.
+    Triangle,
+    /// `sine_wave`: `(1 + sin(2πv)) / 2`.
+    Sine,
+    /// `scallop_wave`: `|sin(πv)|`.
+    Scallop,
+    /// `cubic_wave`: `3v² - 2v³` of the ramp.
+    Cubic,
+    /// `poly_wave E`: the ramp to the power E.
+    Poly(f64),
+}
+
+/// Pattern modifiers: `turbulence`, `octaves`, `omega`, `lambda`, wave form,
+/// `frequency`, `phase`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PatternMods {
+    /// `turbulence <V>` (zero: none).
+    pub turbulence: glam::DVec3,
+    /// `octaves` (default 6).
+    pub octaves: u32,
+    /// `omega` (default 0.5).
+    pub omega: f64,
+    /// `lambda` (default 2).
+    pub lambda: f64,
+    /// The wave form.
+    pub wave: Wave,
+    /// `frequency` (default 1).
+    pub frequency: f64,
+    /// `phase` (default 0).
+    pub phase: f64,
+    /// `noise_generator` in force (1, 2 or 3; default 2).
+    pub noise_generator: u8,
+}
+
+impl Default for PatternMods {
+    fn default() -> Self {
+        PatternMods {
+            turbulence: glam::DVec3::ZERO,
+            octaves: 6,
+            omega: 0.5,
+            lambda: 2.0,
+            wave: Wave::Ramp,
+            frequency: 1.0,
+            phase: 0.0,
+            noise_generator: 2,
+        }
+    }
+}
+
+/// What a pattern's values select.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PatternMap {
+    /// `color_map { [v colour] … }`, sorted by value.
+    Colours(Arc<Vec<(f64, Colour)>>),
+    /// `pigment_map { [v pigment] … }`, sorted by value.
+    Pigments(Arc<Vec<(f64, Pigment)>>),
+    /// The pigments of a list pattern (`hexagon A, B, C`).
+    List(Vec<Pigment>),
+}
+
+/// `image_map { png "file" map_type interpolate once filter/transmit }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ImageMap {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// Linear-light pixels, row 0 at the top.
+    pub pixels: Vec<Colour>,
+    /// `map_type`: 0 planar, 1 spherical, 2 cylindrical.
+    pub map_type: u8,
+    /// `interpolate 2` (bilinear) when true; nearest pixel otherwise.
+    pub interpolate: bool,
+    /// `once`: no tiling (outside the unit square is transparent).
+    pub once: bool,
+    /// `uv_mapping`: look up by the surface's uv instead of the point.
+    pub uv_mapping: bool,
+}
+
+/// `normal { PATTERN [bump_size] modifiers transforms }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Normal {
+    /// The bump pattern.
+    pub kind: PatternKind,
+    /// Its modifiers.
+    pub mods: PatternMods,
+    /// `bump_size` (the depth of the bumps).
+    pub bump_size: f64,
+    /// Transforms of the normal pattern.
+    pub transform: Option<Arc<Transform>>,
 }
 
 /// `reflection { MIN, MAX fresnel falloff metallic }` or `reflection COLOUR`.
@@ -119,6 +314,12 @@ pub struct Finish {
     pub metallic: f64,
     /// Mirror reflection.
     pub reflection: Reflection,
+    /// `emission`: light the surface gives off regardless of `ambient_light`.
+    pub emission: DVec3,
+    /// `conserve_energy`: transmitted light is reduced by what is reflected.
+    pub conserve_energy: bool,
+    /// `crand`: random darkening of each sample (0 = none).
+    pub crand: f64,
 }
 
 impl Default for Finish {
@@ -133,6 +334,9 @@ impl Default for Finish {
             roughness: 0.05,
             metallic: 0.0,
             reflection: Reflection::default(),
+            emission: DVec3::ZERO,
+            conserve_energy: false,
+            crand: 0.0,
         }
     }
 }
@@ -148,6 +352,8 @@ pub struct Interior {
     pub fade_distance: f64,
     /// `fade_power`: exponent of the fading (0 = no fading).
     pub fade_power: f64,
+    /// `fade_color`: the colour light fades towards (default black).
+    pub fade_colour: DVec3,
 }
 
 impl Default for Interior {
@@ -157,6 +363,7 @@ impl Default for Interior {
             ior: 1.0,
             fade_distance: 0.0,
             fade_power: 0.0,
+            fade_colour: DVec3::ZERO,
         }
     }
 }

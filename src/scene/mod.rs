@@ -15,7 +15,10 @@ mod transform;
 pub use atmosphere::{Atmosphere, Fog, FogKind, SkySphere};
 pub use camera::{Camera, CameraKind};
 pub use light::{AreaLight, Beam, Light, LightKind};
-pub use material::{Colour, Finish, Interior, Pattern, Pigment, Reflection, Texture};
+pub use material::{
+    compose, Colour, Finish, ImageMap, Interior, Mapped, Normal, Pattern, PatternKind, PatternMap,
+    PatternMods, Pigment, Reflection, Texture, Wave,
+};
 pub use object::{Object, ObjectFlags, Shape};
 pub use transform::Transform;
 
@@ -64,6 +67,8 @@ pub struct GlobalSettings {
     /// `adc_bailout`: rays whose contribution falls below this are not traced further
     /// (default 1/255).
     pub adc_bailout: f64,
+    /// `noise_generator`: 1, 2 or 3 (default 2); patterns declared after it use it.
+    pub noise_generator: u8,
 }
 
 impl Default for GlobalSettings {
@@ -73,6 +78,7 @@ impl Default for GlobalSettings {
             assumed_gamma: None,
             max_trace_level: 5,
             adc_bailout: 1.0 / 255.0,
+            noise_generator: 2,
         }
     }
 }

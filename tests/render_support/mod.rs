@@ -25,6 +25,7 @@ pub fn texture(rgb: DVec3, finish: Finish) -> Option<Arc<Texture>> {
     Some(Arc::new(Texture {
         pigment: solid(rgb),
         finish,
+        ..Texture::default()
     }))
 }
 
