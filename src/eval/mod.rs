@@ -14,7 +14,9 @@ mod exprs;
 mod include;
 mod items;
 mod materials;
+mod mesh;
 mod objects;
+mod shapes;
 mod scope;
 pub mod value;
 

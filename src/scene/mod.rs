@@ -14,7 +14,7 @@ mod transform;
 pub use camera::{Camera, CameraKind};
 pub use light::{Light, LightKind};
 pub use material::{Colour, Finish, Interior, Pattern, Pigment, Reflection, Texture};
-pub use object::{Object, ObjectFlags, Shape};
+pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape};
 pub use transform::Transform;
 
 use glam::DVec3;

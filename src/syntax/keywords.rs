@@ -64,6 +64,7 @@ pub const KEYWORDS: &[&str] = &[
     "hexagon",
     "hollow",
     "image_map",
+    "inside_vector",
     "interior",
     "interpolate",
     "intersection",
