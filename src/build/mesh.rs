@@ -19,10 +19,9 @@ pub struct MeshAccel {
 impl MeshAccel {
     /// Builds the hierarchy over `data`'s triangles.
     pub fn new(data: Arc<MeshData>) -> MeshAccel {
-        let items: Vec<(u32, Aabb)> = (0..data.triangles.len())
-            .map(|i| (i as u32, Aabb::from_points(data.corners(i))))
-            .collect();
-        let bvh = Bvh::build(&items);
+        let bvh = Bvh::build_indexed(data.triangles.len(), |i| {
+            Aabb::from_points(data.corners(i))
+        });
         MeshAccel { data, bvh }
     }
 
