@@ -16,6 +16,7 @@ const BLOCKS: &[&str] = &[
     "object",
     "cylinder",
     "cone",
+    "height_field",
     "torus",
     "disc",
     "smooth_triangle",
@@ -49,7 +50,6 @@ const BLOCKS: &[&str] = &[
 /// POV-Ray blocks that a later release implements.
 const LATER_BLOCKS: &[&str] = &[
     "blob",
-    "height_field",
     "isosurface",
     "julia_fractal",
     "lathe",
@@ -114,7 +114,7 @@ impl Evaluator<'_> {
         let mut c = Cursor::new(toks.toks, kw, b.span);
         Ok(Some(match kw {
             "sphere" | "plane" | "box" | "triangle" | "union" | "object" | "cylinder" | "cone"
-            | "torus" | "disc" | "smooth_triangle" | "polygon" | "mesh" | "mesh2"
+            | "torus" | "disc" | "height_field" | "smooth_triangle" | "polygon" | "mesh" | "mesh2"
             | "polyhedron" | "merge" | "intersection" | "difference" => {
                 Value::Object(std::sync::Arc::new(self.object(&mut c)?))
             }

@@ -67,6 +67,29 @@ impl Evaluator<'_> {
         let mut b = MeshBuilder::default();
         loop {
             match c.peek() {
+                Some(Tok::Kw(kw @ ("obj_file" | "ply_file"), _)) => {
+                    let kw = *kw;
+                    c.next();
+                    if !b.data.triangles.is_empty() {
+                        return Err(Diagnostic::error(
+                            codes::UNEXPECTED_ITEM,
+                            c.last,
+                            format!("`{kw}` must be the only content of its mesh"),
+                        )
+                        .with_help("put the file's mesh and the other triangles in separate meshes")
+                        .into());
+                    }
+                    let mut data = if kw == "obj_file" {
+                        self.obj_mesh(c)?
+                    } else {
+                        self.ply_mesh(c)?
+                    };
+                    if let Some(Tok::Kw("inside_vector", _)) = c.peek() {
+                        c.next();
+                        data.inside_vector = Some(self.inside_vector(c)?);
+                    }
+                    return Ok(Object::new(Shape::Mesh(Arc::new(data)), c.span));
+                }
                 Some(Tok::Block("triangle" | "smooth_triangle", _, _)) => {
                     let Some(Tok::Block(_, v, s)) = c.next() else {
                         unreachable!()

@@ -14,6 +14,7 @@ mod exprs;
 mod include;
 mod items;
 mod materials;
+mod import;
 mod mesh;
 mod objects;
 mod shapes;

@@ -45,6 +45,7 @@ impl Evaluator<'_> {
         let mut obj = match c.block {
             "mesh" => self.mesh(c)?,
             "mesh2" => self.mesh2(c)?,
+            "height_field" => self.height_field(c)?,
             "sphere" => {
                 let center = self.take_vec3(c, "the sphere's centre")?;
                 c.comma();
