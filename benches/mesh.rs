@@ -18,8 +18,12 @@ fn grid(n: u32) -> MeshData {
     let v = n + 1;
     for j in 0..v {
         for i in 0..v {
-            let (x, z) = (i as f32 / n as f32 * 2.0 - 1.0, j as f32 / n as f32 * 2.0 - 1.0);
-            m.positions.push([x, 0.1 * (x * 20.0).sin() * (z * 17.0).cos(), z]);
+            let (x, z) = (
+                i as f32 / n as f32 * 2.0 - 1.0,
+                j as f32 / n as f32 * 2.0 - 1.0,
+            );
+            m.positions
+                .push([x, 0.1 * (x * 20.0).sin() * (z * 17.0).cos(), z]);
         }
     }
     m.triangles.reserve(2 * (n * n) as usize);

@@ -43,7 +43,8 @@ fn triangles(s: &rts::scene::Scene, k: usize) -> usize {
 const CUBE_OBJ: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n\
 f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 4 8 7 3\nf 1 5 8 4\nf 2 3 7 6\n";
 
-const TET_PLY: &str = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n\
+const TET_PLY: &str =
+    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n\
 property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n\
 0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
 

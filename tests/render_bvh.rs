@@ -53,10 +53,20 @@ fn convex_object() -> impl Strategy<Value = Object> {
         (v3(10.0), v3(2.0), v3(2.0)).prop_map(|(a, b, c)| triangle(a, a + b, a + c)),
         (unit(), -10.0..10.0f64).prop_map(|(n, d)| plane(n, d)),
         (v3(10.0), v3(2.0), 0.05..1.5f64, any::<bool>()).prop_map(|(a, d, r, open)| {
-            object(Shape::Cylinder { base: a, cap: a + d + DVec3::X * 0.1, radius: r, open })
+            object(Shape::Cylinder {
+                base: a,
+                cap: a + d + DVec3::X * 0.1,
+                radius: r,
+                open,
+            })
         }),
         (v3(10.0), unit(), 0.1..2.0f64, 0.0..1.0f64).prop_map(|(c, n, r, h)| {
-            object(Shape::Disc { center: c, normal: n, radius: r, hole: h * r * 0.9 })
+            object(Shape::Disc {
+                center: c,
+                normal: n,
+                radius: r,
+                hole: h * r * 0.9,
+            })
         }),
         (v3(10.0), 0.1..2.0f64).prop_map(|(c, r)| polyhedron_cube(c, r)),
     ]
@@ -106,7 +116,8 @@ fn shared_mesh() -> std::sync::Arc<MeshData> {
         for j in 0..n {
             for i in 0..n {
                 let (x, z) = (i as f32 * 0.3 - 3.0, j as f32 * 0.3 - 3.0);
-                m.positions.push([x, ((x * 3.0).sin() * (z * 2.0).cos()) * 0.5, z]);
+                m.positions
+                    .push([x, ((x * 3.0).sin() * (z * 2.0).cos()) * 0.5, z]);
             }
         }
         for j in 0..n - 1 {

@@ -233,8 +233,9 @@ impl Csg {
                 None => *ray,
                 Some(t) => ray.transformed(&t.inverse),
             };
-            l.shape
-                .hits(&local, t_min, t_max, &mut |t, sub| all.push((t, i as u32, sub)));
+            l.shape.hits(&local, t_min, t_max, &mut |t, sub| {
+                all.push((t, i as u32, sub))
+            });
         }
         all.sort_by(|a, b| a.0.total_cmp(&b.0));
         all.into_iter()
@@ -256,18 +257,13 @@ impl Csg {
                     l.bounds
                 }
             }
-            CsgNode::Group {
-                inverse: true, ..
-            }
-            | CsgNode::Clip {
-                inverse: true, ..
-            } => None,
+            CsgNode::Group { inverse: true, .. } | CsgNode::Clip { inverse: true, .. } => None,
             CsgNode::Group { kind, children, .. } => {
                 let bs = children.iter().map(|c| self.node_bounds(c));
                 match kind {
-                    GroupKind::Union | GroupKind::Merge => {
-                        bs.fold(Some(Aabb::EMPTY), |a, b| Some(a?.union(&b?)))
-                    }
+                    GroupKind::Union | GroupKind::Merge => bs
+                        .into_iter()
+                        .try_fold(Aabb::EMPTY, |a, b| Some(a.union(&b?))),
                     GroupKind::Intersection => bs.fold(None, meet),
                 }
             }

@@ -19,9 +19,7 @@ pub struct MeshAccel {
 impl MeshAccel {
     /// Builds the hierarchy over `data`'s triangles.
     pub fn new(data: Arc<MeshData>) -> MeshAccel {
-        let bvh = Bvh::build_indexed(data.triangles.len(), |i| {
-            Aabb::from_points(data.corners(i))
-        });
+        let bvh = Bvh::build_indexed(data.triangles.len(), |i| Aabb::from_points(data.corners(i)));
         MeshAccel { data, bvh }
     }
 

@@ -189,7 +189,7 @@ impl Builder {
             };
             let mut own = obj.clone();
             own.flags.inverse = false;
-            let mut root = self.csg_node(&own, parent, inh, &inner, &mut leaves);
+            let mut root = self.csg_node(&own, parent, inh, &mut leaves);
             if here.flags.inverse {
                 root.invert(&mut leaves);
             }
@@ -213,14 +213,13 @@ impl Builder {
         self.prims.push(primitive(shape, transform, &here));
     }
 
-    /// The CSG node for `obj`; `flags_inh` carries inheritance for its parts
-    /// (with `inverse` handled in the tree, not the flags).
+    /// The CSG node for `obj` under a parent at `parent` (`inverse` is handled in
+    /// the tree, not in the leaves' flags).
     fn csg_node(
         &mut self,
         obj: &Object,
         parent: Option<&Transform>,
         inh: &Inherited,
-        _flags_inh: &Inherited,
         leaves: &mut Vec<CsgLeaf>,
     ) -> CsgNode {
         let (world_from_obj, mut here) = Builder::here(obj, parent, inh);
@@ -231,14 +230,14 @@ impl Builder {
                 kind: GroupKind::Union,
                 children: children
                     .iter()
-                    .map(|c| self.csg_node(c, world_from_obj.as_ref(), &here, &here, leaves))
+                    .map(|c| self.csg_node(c, world_from_obj.as_ref(), &here, leaves))
                     .collect(),
                 inverse: false,
             },
             Shape::Csg { op, children } => {
                 let mut nodes: Vec<CsgNode> = children
                     .iter()
-                    .map(|c| self.csg_node(c, world_from_obj.as_ref(), &here, &here, leaves))
+                    .map(|c| self.csg_node(c, world_from_obj.as_ref(), &here, leaves))
                     .collect();
                 let kind = match op {
                     CsgOp::Merge => GroupKind::Merge,
@@ -276,7 +275,7 @@ impl Builder {
         if let Some(clips) = &obj.clipped_by {
             let clips = clips
                 .iter()
-                .map(|c| self.csg_node(c, world_from_obj.as_ref(), &here, &here, leaves))
+                .map(|c| self.csg_node(c, world_from_obj.as_ref(), &here, leaves))
                 .collect();
             node = CsgNode::Clip {
                 object: Box::new(node),
@@ -318,7 +317,11 @@ impl Builder {
             }
             Shape::SmoothTriangle { vertices, normals } => {
                 let v = vertices.map(to_world);
-                let n = normals.map(|n| world_from_obj.map_or(n, |t| t.normal(n)).normalize_or_zero());
+                let n = normals.map(|n| {
+                    world_from_obj
+                        .map_or(n, |t| t.normal(n))
+                        .normalize_or_zero()
+                });
                 let (a, e1, e2) = (v[0], v[1] - v[0], v[2] - v[0]);
                 return (
                     PrimShape::SmoothTriangle(Box::new(SmoothTriangle {
@@ -559,8 +562,7 @@ impl World {
         let mut best: Option<Hit> = None;
         for (i, p) in self.primitives.iter().enumerate() {
             if kind.sees(&p.flags) {
-                if let Some((t, leaf, sub)) = p.intersect(ray, t_min, best.map_or(t_max, |h| h.t))
-                {
+                if let Some((t, leaf, sub)) = p.intersect(ray, t_min, best.map_or(t_max, |h| h.t)) {
                     best = Some(Hit {
                         t,
                         prim: i as u32,

@@ -30,10 +30,7 @@ pub fn cubic(a: f64, b: f64, c: f64, out: &mut [f64; 3]) -> usize {
     };
     for x in out.iter_mut().take(n) {
         *x = polish(*x, |x| {
-            (
-                ((x + a) * x + b) * x + c,
-                (3.0 * x + 2.0 * a) * x + b,
-            )
+            (((x + a) * x + b) * x + c, (3.0 * x + 2.0 * a) * x + b)
         });
     }
     n
@@ -119,7 +116,8 @@ fn polish(mut x: f64, f: impl Fn(f64) -> (f64, f64)) -> f64 {
         }
         let nx = x - fx / dfx;
         let (nf, nd) = f(nx);
-        if !(nf.abs() < fx.abs()) {
+        // Stop unless strictly better (a NaN is never better).
+        if nf.abs().partial_cmp(&fx.abs()) != Some(std::cmp::Ordering::Less) {
             break;
         }
         (x, fx, dfx) = (nx, nf, nd);
@@ -153,7 +151,10 @@ mod tests {
             let mut out = [0.0; 4];
             assert_eq!(quartic(a, b, c, d, &mut out), 4, "{roots:?}");
             for (x, r) in out.iter().zip(roots) {
-                assert!((x - r).abs() < 1e-7 * (1.0 + r.abs()), "{out:?} vs {roots:?}");
+                assert!(
+                    (x - r).abs() < 1e-7 * (1.0 + r.abs()),
+                    "{out:?} vs {roots:?}"
+                );
             }
         }
     }

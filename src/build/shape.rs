@@ -316,7 +316,9 @@ impl PrimShape {
     /// Whether `p` (this shape's space) is strictly inside, before `inverse`.
     pub fn inside(&self, p: DVec3) -> bool {
         match self {
-            PrimShape::Sphere { center, radius } => (p - *center).length_squared() < radius * radius,
+            PrimShape::Sphere { center, radius } => {
+                (p - *center).length_squared() < radius * radius
+            }
             PrimShape::Plane { normal, distance } => normal.dot(p) < *distance,
             PrimShape::Box { min, max } => p.cmpgt(*min).all() && p.cmplt(*max).all(),
             PrimShape::Frustum(f) => f.inside(p),
@@ -335,9 +337,10 @@ impl PrimShape {
     pub fn local_bounds(&self) -> Option<Aabb> {
         Some(match self {
             PrimShape::Plane { .. } => return None,
-            PrimShape::Sphere { center, radius } => {
-                Aabb::new(*center - DVec3::splat(*radius), *center + DVec3::splat(*radius))
-            }
+            PrimShape::Sphere { center, radius } => Aabb::new(
+                *center - DVec3::splat(*radius),
+                *center + DVec3::splat(*radius),
+            ),
             PrimShape::Box { min, max } => Aabb::new(*min, *max),
             PrimShape::Triangle { a, e1, e2 } => Aabb::from_points([*a, *a + *e1, *a + *e2]),
             PrimShape::SmoothTriangle(s) => Aabb::from_points([s.a, s.a + s.e1, s.a + s.e2]),
@@ -351,10 +354,7 @@ impl PrimShape {
                 Aabb::new(*center - ext, *center + ext)
             }
             PrimShape::Polygon(p) => {
-                let pts = p
-                    .edges
-                    .iter()
-                    .map(|e| p.origin + p.u * e.0.x + p.v * e.0.y);
+                let pts = p.edges.iter().map(|e| p.origin + p.u * e.0.x + p.v * e.0.y);
                 Aabb::from_points(pts)
             }
             PrimShape::Polyhedron(planes) => polyhedron_bounds(planes)?,
@@ -428,7 +428,10 @@ fn polyhedron_bounds(planes: &[(DVec3, f64)]) -> Option<Aabb> {
         return None;
     }
     let pad = 1e-9 * (1.0 + b.max.abs().max(b.min.abs()).max_element());
-    Some(Aabb::new(b.min - DVec3::splat(pad), b.max + DVec3::splat(pad)))
+    Some(Aabb::new(
+        b.min - DVec3::splat(pad),
+        b.max + DVec3::splat(pad),
+    ))
 }
 
 /// Normal of the box face nearest to `p`, measured relative to the box size.

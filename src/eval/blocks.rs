@@ -114,8 +114,8 @@ impl Evaluator<'_> {
         let mut c = Cursor::new(toks.toks, kw, b.span);
         Ok(Some(match kw {
             "sphere" | "plane" | "box" | "triangle" | "union" | "object" | "cylinder" | "cone"
-            | "torus" | "disc" | "height_field" | "smooth_triangle" | "polygon" | "mesh" | "mesh2"
-            | "polyhedron" | "merge" | "intersection" | "difference" => {
+            | "torus" | "disc" | "height_field" | "smooth_triangle" | "polygon" | "mesh"
+            | "mesh2" | "polyhedron" | "merge" | "intersection" | "difference" => {
                 Value::Object(std::sync::Arc::new(self.object(&mut c)?))
             }
             "clipped_by" | "bounded_by" | "vertex_vectors" | "normal_vectors" | "uv_vectors"

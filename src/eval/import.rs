@@ -55,11 +55,15 @@ impl Evaluator<'_> {
             }
             return Ok(canon);
         }
-        Err(Diagnostic::error(codes::FILE_NOT_FOUND, span, format!("file `{name}` not found"))
-            .with_label("no such file")
-            .with_note(format!("tried: {}", tried.join(", ")))
-            .with_help("check the file name, or add its folder with -I DIR")
-            .into())
+        Err(Diagnostic::error(
+            codes::FILE_NOT_FOUND,
+            span,
+            format!("file `{name}` not found"),
+        )
+        .with_label("no such file")
+        .with_note(format!("tried: {}", tried.join(", ")))
+        .with_help("check the file name, or add its folder with -I DIR")
+        .into())
     }
 
     /// The file name string after `obj_file`, `ply_file` or `png`.
@@ -78,9 +82,13 @@ impl Evaluator<'_> {
         let (name, span) = self.file_name(c, "the OBJ file's name")?;
         let path = self.data_file(&name, span)?;
         let bad = |e: String| -> super::Fail {
-            Diagnostic::error(codes::FILE_NOT_FOUND, span, format!("cannot read `{name}` as OBJ: {e}"))
-                .with_help("give a Wavefront .obj file with `v` and `f` lines")
-                .into()
+            Diagnostic::error(
+                codes::FILE_NOT_FOUND,
+                span,
+                format!("cannot read `{name}` as OBJ: {e}"),
+            )
+            .with_help("give a Wavefront .obj file with `v` and `f` lines")
+            .into()
         };
         let file = std::fs::File::open(&path).map_err(|e| bad(e.to_string()))?;
         let opts = tobj::LoadOptions {
@@ -101,9 +109,12 @@ impl Evaluator<'_> {
                 m.normals.len() as u32,
                 m.uvs.len() as u32,
             );
-            m.positions.extend(mm.positions.chunks_exact(3).map(|p| [p[0], p[1], p[2]]));
-            m.normals.extend(mm.normals.chunks_exact(3).map(|p| [p[0], p[1], p[2]]));
-            m.uvs.extend(mm.texcoords.chunks_exact(2).map(|p| [p[0], p[1]]));
+            m.positions
+                .extend(mm.positions.chunks_exact(3).map(|p| [p[0], p[1], p[2]]));
+            m.normals
+                .extend(mm.normals.chunks_exact(3).map(|p| [p[0], p[1], p[2]]));
+            m.uvs
+                .extend(mm.texcoords.chunks_exact(2).map(|p| [p[0], p[1]]));
             let tri = |ix: &[u32], base: u32| -> Vec<[u32; 3]> {
                 ix.chunks_exact(3)
                     .map(|t| [t[0] + base, t[1] + base, t[2] + base])
@@ -113,7 +124,8 @@ impl Evaluator<'_> {
             let nfaces = faces.len();
             m.triangles.extend(faces);
             if mm.normal_indices.len() == mm.indices.len() && !mm.normals.is_empty() {
-                m.normal_indices.resize(m.triangles.len() - nfaces, [u32::MAX; 3]);
+                m.normal_indices
+                    .resize(m.triangles.len() - nfaces, [u32::MAX; 3]);
                 m.normal_indices.extend(tri(&mm.normal_indices, nbase));
             }
             if mm.texcoord_indices.len() == mm.indices.len() && !mm.texcoords.is_empty() {
@@ -143,16 +155,23 @@ impl Evaluator<'_> {
         let (name, span) = self.file_name(c, "the PLY file's name")?;
         let path = self.data_file(&name, span)?;
         let bad = |e: String| -> super::Fail {
-            Diagnostic::error(codes::FILE_NOT_FOUND, span, format!("cannot read `{name}` as PLY: {e}"))
-                .with_help("give a .ply file with `vertex` and `face` elements")
-                .into()
+            Diagnostic::error(
+                codes::FILE_NOT_FOUND,
+                span,
+                format!("cannot read `{name}` as PLY: {e}"),
+            )
+            .with_help("give a .ply file with `vertex` and `face` elements")
+            .into()
         };
         let file = std::fs::File::open(&path).map_err(|e| bad(e.to_string()))?;
         let ply = Parser::<DefaultElement>::new()
             .read_ply(&mut std::io::BufReader::new(file))
             .map_err(|e| bad(e.to_string()))?;
         let mut m = MeshData::default();
-        let verts = ply.payload.get("vertex").ok_or_else(|| bad("no `vertex` element".into()))?;
+        let verts = ply
+            .payload
+            .get("vertex")
+            .ok_or_else(|| bad("no `vertex` element".into()))?;
         let mut has_normals = true;
         for v in verts {
             let get = |k: &str| v.get(k).and_then(|p| p.to_f32_lossy());
@@ -165,7 +184,10 @@ impl Evaluator<'_> {
                 _ => has_normals = false,
             }
         }
-        let faces = ply.payload.get("face").ok_or_else(|| bad("no `face` element".into()))?;
+        let faces = ply
+            .payload
+            .get("face")
+            .ok_or_else(|| bad("no `face` element".into()))?;
         for f in faces {
             let list = f
                 .get("vertex_indices")
@@ -214,8 +236,12 @@ impl Evaluator<'_> {
             .and_then(|r| r.decode().map_err(|e| e.to_string()))
             .map_err(|e| {
                 super::Fail::from(
-                    Diagnostic::error(codes::FILE_NOT_FOUND, fspan, format!("cannot read `{name}` as PNG: {e}"))
-                        .with_help("give a PNG image"),
+                    Diagnostic::error(
+                        codes::FILE_NOT_FOUND,
+                        fspan,
+                        format!("cannot read `{name}` as PNG: {e}"),
+                    )
+                    .with_help("give a PNG image"),
                 )
             })?;
         let grey = img.to_luma16();
@@ -259,7 +285,9 @@ impl Evaluator<'_> {
         for j in 0..h - 1 {
             for i in 0..w - 1 {
                 let q = [at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)];
-                if q.iter().all(|&k| (m.positions[k as usize][1] as f64) < water) {
+                if q.iter()
+                    .all(|&k| (m.positions[k as usize][1] as f64) < water)
+                {
                     continue;
                 }
                 m.triangles.push([q[0], q[2], q[1]]);
@@ -288,11 +316,13 @@ impl Evaluator<'_> {
 fn check_indices(m: &MeshData) -> Result<(), String> {
     let n = m.positions.len() as u32;
     if let Some(t) = m.triangles.iter().find(|t| t.iter().any(|&i| i >= n)) {
-        return Err(format!("a face refers to vertex {} of {n}", t.iter().max().unwrap_or(&0)));
+        return Err(format!(
+            "a face refers to vertex {} of {n}",
+            t.iter().max().unwrap_or(&0)
+        ));
     }
     let nn = m.normals.len() as u32;
-    if m
-        .normal_indices
+    if m.normal_indices
         .iter()
         .any(|t| t[0] != u32::MAX && t.iter().any(|&i| i >= nn))
     {

@@ -41,9 +41,12 @@ impl MeshBuilder {
         d.triangles.push(tri);
         if let Some(n) = n {
             if d.normal_indices.len() + 1 < d.triangles.len() {
-                d.normal_indices.resize(d.triangles.len() - 1, [u32::MAX; 3]);
+                d.normal_indices
+                    .resize(d.triangles.len() - 1, [u32::MAX; 3]);
             }
-            let ni = n.map(|m| MeshBuilder::index(&mut self.normals, &mut d.normals, m.normalize_or_zero()));
+            let ni = n.map(|m| {
+                MeshBuilder::index(&mut self.normals, &mut d.normals, m.normalize_or_zero())
+            });
             d.normal_indices.push(ni);
         } else if !d.normal_indices.is_empty() {
             d.normal_indices.push([u32::MAX; 3]);
@@ -53,7 +56,8 @@ impl MeshBuilder {
                 d.textures.push(t.clone());
                 d.textures.len() as u32 - 1
             });
-            d.texture_indices.resize(d.triangles.len() - 1, [u32::MAX; 3]);
+            d.texture_indices
+                .resize(d.triangles.len() - 1, [u32::MAX; 3]);
             d.texture_indices.push([k; 3]);
         } else if !d.texture_indices.is_empty() {
             d.texture_indices.push([u32::MAX; 3]);
@@ -103,8 +107,8 @@ impl Evaluator<'_> {
                             b.push(vertices.map(place), None, o.texture.as_ref())
                         }
                         Shape::SmoothTriangle { vertices, normals } => {
-                            let n = normals
-                                .map(|n| o.transform.as_deref().map_or(n, |t| t.normal(n)));
+                            let n =
+                                normals.map(|n| o.transform.as_deref().map_or(n, |t| t.normal(n)));
                             b.push(vertices.map(place), Some(n), o.texture.as_ref())
                         }
                         _ => {
@@ -125,16 +129,22 @@ impl Evaluator<'_> {
             }
         }
         if b.data.triangles.is_empty() {
-            return Err(Diagnostic::error(codes::MISSING_VALUE, c.span, "this mesh has no triangles")
-                .with_help("put triangles in the mesh: `mesh { triangle { A, B, C } … }`")
-                .into());
+            return Err(Diagnostic::error(
+                codes::MISSING_VALUE,
+                c.span,
+                "this mesh has no triangles",
+            )
+            .with_help("put triangles in the mesh: `mesh { triangle { A, B, C } … }`")
+            .into());
         }
         let mut data = b.data;
         if !data.normal_indices.is_empty() {
-            data.normal_indices.resize(data.triangles.len(), [u32::MAX; 3]);
+            data.normal_indices
+                .resize(data.triangles.len(), [u32::MAX; 3]);
         }
         if !data.texture_indices.is_empty() {
-            data.texture_indices.resize(data.triangles.len(), [u32::MAX; 3]);
+            data.texture_indices
+                .resize(data.triangles.len(), [u32::MAX; 3]);
         }
         Ok(Object::new(Shape::Mesh(Arc::new(data)), c.span))
     }
@@ -143,9 +153,13 @@ impl Evaluator<'_> {
         let (v, s) = c.value("the inside vector")?;
         let d = self.to_vec3(&v, s)?;
         if d.length_squared() == 0.0 {
-            return Err(Diagnostic::error(codes::INVALID_SIZE, s, "the inside vector is <0, 0, 0>")
-                .with_help("give any direction, e.g. `inside_vector y`")
-                .into());
+            return Err(Diagnostic::error(
+                codes::INVALID_SIZE,
+                s,
+                "the inside vector is <0, 0, 0>",
+            )
+            .with_help("give any direction, e.g. `inside_vector y`")
+            .into());
         }
         Ok(d)
     }
@@ -217,9 +231,7 @@ impl Evaluator<'_> {
         if let Some((l, s)) = &lists[2] {
             for (v, s) in self.counted(LISTS[2], l, *s, false)? {
                 match v {
-                    Value::Vector(x) if x.len == 2 => {
-                        data.uvs.push([x.c[0] as f32, x.c[1] as f32])
-                    }
+                    Value::Vector(x) if x.len == 2 => data.uvs.push([x.c[0] as f32, x.c[1] as f32]),
                     other => return Err(self.mismatch("a uv vector <u, v>", other, *s)),
                 }
             }
@@ -251,17 +263,16 @@ impl Evaluator<'_> {
             if !tex.is_empty() {
                 data.texture_indices
                     .resize(data.triangles.len() - 1, [u32::MAX; 3]);
-                data.texture_indices.push([tex[0], tex[tex.len().min(2) - 1], tex[tex.len() - 1]]);
+                data.texture_indices
+                    .push([tex[0], tex[tex.len().min(2) - 1], tex[tex.len() - 1]]);
             }
         }
         if !data.texture_indices.is_empty() {
-            data.texture_indices.resize(data.triangles.len(), [u32::MAX; 3]);
+            data.texture_indices
+                .resize(data.triangles.len(), [u32::MAX; 3]);
         }
         // normal_indices / uv_indices default to face_indices, as in POV-Ray.
-        for (k, count, target) in [
-            (5, data.normals.len(), 0usize),
-            (6, data.uvs.len(), 1usize),
-        ] {
+        for (k, count, target) in [(5, data.normals.len(), 0usize), (6, data.uvs.len(), 1usize)] {
             if count == 0 {
                 continue;
             }
@@ -281,13 +292,22 @@ impl Evaluator<'_> {
                         )
                         .into());
                     }
-                    let name = if target == 0 { "normal_vectors" } else { "uv_vectors" };
+                    let name = if target == 0 {
+                        "normal_vectors"
+                    } else {
+                        "uv_vectors"
+                    };
                     e.iter()
                         .map(|x| self.indices(x, count, name))
                         .collect::<R<Vec<_>>>()?
                 }
                 None => {
-                    if let Some(bad) = data.triangles.iter().flatten().find(|&&i| i as usize >= count) {
+                    if let Some(bad) = data
+                        .triangles
+                        .iter()
+                        .flatten()
+                        .find(|&&i| i as usize >= count)
+                    {
                         let (_, s) = lists[4].as_ref().expect("checked above");
                         return Err(out_of_range(*s, *bad as f64, count, LISTS[1 + target]));
                     }
@@ -301,7 +321,9 @@ impl Evaluator<'_> {
             }
         }
         if data.triangles.is_empty() {
-            return Err(Diagnostic::error(codes::MISSING_VALUE, c.span, "this mesh2 has no faces").into());
+            return Err(
+                Diagnostic::error(codes::MISSING_VALUE, c.span, "this mesh2 has no faces").into(),
+            );
         }
         Ok(Object::new(Shape::Mesh(Arc::new(data)), c.span))
     }

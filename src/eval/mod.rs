@@ -11,14 +11,14 @@ mod camera;
 mod cursor;
 mod directives;
 mod exprs;
+mod import;
 mod include;
 mod items;
 mod materials;
-mod import;
 mod mesh;
 mod objects;
-mod shapes;
 mod scope;
+mod shapes;
 pub mod value;
 
 pub use builtins::BUILTIN_NAMES;

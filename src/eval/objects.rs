@@ -135,9 +135,18 @@ impl Evaluator<'_> {
                     );
                 }
                 let shape = match kw {
-                    "merge" => Shape::Csg { op: CsgOp::Merge, children },
-                    "intersection" => Shape::Csg { op: CsgOp::Intersection, children },
-                    "difference" => Shape::Csg { op: CsgOp::Difference, children },
+                    "merge" => Shape::Csg {
+                        op: CsgOp::Merge,
+                        children,
+                    },
+                    "intersection" => Shape::Csg {
+                        op: CsgOp::Intersection,
+                        children,
+                    },
+                    "difference" => Shape::Csg {
+                        op: CsgOp::Difference,
+                        children,
+                    },
                     _ => Shape::Union { children },
                 };
                 let mut obj = Object::new(shape, span);
@@ -271,9 +280,13 @@ impl Evaluator<'_> {
                     }
                 }
                 if clips.is_empty() {
-                    return Err(Diagnostic::error(codes::MISSING_VALUE, span, "`clipped_by` needs an object")
-                        .with_help("write e.g. `clipped_by { plane { y, 0 } }`")
-                        .into());
+                    return Err(Diagnostic::error(
+                        codes::MISSING_VALUE,
+                        span,
+                        "`clipped_by` needs an object",
+                    )
+                    .with_help("write e.g. `clipped_by { plane { y, 0 } }`")
+                    .into());
                 }
                 obj.clipped_by = Some(Arc::new(clips));
             }

@@ -198,7 +198,9 @@ impl Evaluator<'_> {
                         return Err(Diagnostic::error(
                             codes::INVALID_SIZE,
                             s,
-                            format!("the hole radius {hole} must be between 0 and the radius {radius}"),
+                            format!(
+                                "the hole radius {hole} must be between 0 and the radius {radius}"
+                            ),
                         )
                         .with_help("make the hole smaller than the disc")
                         .into());

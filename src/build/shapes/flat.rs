@@ -161,11 +161,26 @@ mod tests {
     #[test]
     fn barycentric_inverts_the_hit() {
         let (a, e1, e2) = (DVec3::ZERO, DVec3::X * 2.0, DVec3::Y * 3.0);
-        let (t, u, v) = triangle(a, e1, e2, &Ray::new(DVec3::new(0.5, 0.6, 1.0), -DVec3::Z)).unwrap();
+        let (t, u, v) =
+            triangle(a, e1, e2, &Ray::new(DVec3::new(0.5, 0.6, 1.0), -DVec3::Z)).unwrap();
         assert_eq!(t, 1.0);
         let (bu, bv) = barycentric(a, e1, e2, DVec3::new(0.5, 0.6, 0.0));
         assert!((bu - u).abs() < 1e-12 && (bv - v).abs() < 1e-12);
-        assert!(disc(DVec3::ZERO, DVec3::Z, 1.0, 0.25, &Ray::new(DVec3::new(0.7, 0.0, 1.0), -DVec3::Z)).is_some());
-        assert!(disc(DVec3::ZERO, DVec3::Z, 1.0, 0.25, &Ray::new(DVec3::new(0.3, 0.0, 1.0), -DVec3::Z)).is_none());
+        assert!(disc(
+            DVec3::ZERO,
+            DVec3::Z,
+            1.0,
+            0.25,
+            &Ray::new(DVec3::new(0.7, 0.0, 1.0), -DVec3::Z)
+        )
+        .is_some());
+        assert!(disc(
+            DVec3::ZERO,
+            DVec3::Z,
+            1.0,
+            0.25,
+            &Ray::new(DVec3::new(0.3, 0.0, 1.0), -DVec3::Z)
+        )
+        .is_none());
     }
 }

@@ -151,7 +151,10 @@ mod tests {
         assert!(all(&open, &Ray::new(DVec3::new(0.5, 5.0, 0.0), -DVec3::Y)).is_empty());
         assert!(!open.inside(DVec3::new(0.5, 1.0, 0.0)));
         let b = c.bounds();
-        assert_eq!((b.min, b.max), (DVec3::new(-1.0, 0.0, -1.0), DVec3::new(1.0, 2.0, 1.0)));
+        assert_eq!(
+            (b.min, b.max),
+            (DVec3::new(-1.0, 0.0, -1.0), DVec3::new(1.0, 2.0, 1.0))
+        );
     }
 
     #[test]

@@ -64,7 +64,9 @@ pub fn planes(vertices: &[DVec3], faces: &[Vec<usize>]) -> Result<Vec<(DVec3, f6
             d = -d;
         }
         if p.iter().any(|q| (n.dot(*q) - d).abs() > 1e-6 * scale) {
-            return Err(format!("face {k} is not flat: its vertices are not in one plane"));
+            return Err(format!(
+                "face {k} is not flat: its vertices are not in one plane"
+            ));
         }
         if vertices.iter().any(|v| n.dot(*v) - d > 1e-6 * scale) {
             return Err(format!(
@@ -94,7 +96,8 @@ mod tests {
             vec![1, 3, 7, 5],
         ];
         let pl = planes(&v, &faces).unwrap();
-        let ((t0, _), (t1, _)) = slab(&pl, &Ray::new(DVec3::new(0.5, 0.5, -2.0), DVec3::Z)).unwrap();
+        let ((t0, _), (t1, _)) =
+            slab(&pl, &Ray::new(DVec3::new(0.5, 0.5, -2.0), DVec3::Z)).unwrap();
         assert_eq!((t0, t1), (2.0, 3.0));
         assert!(inside(&pl, DVec3::splat(0.5)));
         assert!(!inside(&pl, DVec3::splat(1.5)));

@@ -85,7 +85,10 @@ mod tests {
 
     #[test]
     fn ray_down_through_the_tube() {
-        let h = all(&Ray::new(DVec3::new(0.0, 10.0, 2.0), DVec3::new(0.0, -3.0, 0.0)));
+        let h = all(&Ray::new(
+            DVec3::new(0.0, 10.0, 2.0),
+            DVec3::new(0.0, -3.0, 0.0),
+        ));
         assert_eq!(h.len(), 2);
         assert!((h[0] - 9.5 / 3.0).abs() < 1e-12 && (h[1] - 10.5 / 3.0).abs() < 1e-12);
         // Through the hole: no hit.
@@ -100,7 +103,9 @@ mod tests {
     fn grazing_and_random_rays_land_on_the_surface() {
         let mut seed = 12345u64;
         let mut rnd = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
         };
         for _ in 0..2000 {
