@@ -136,6 +136,7 @@ impl Evaluator<'_> {
         if !m.normal_indices.is_empty() {
             m.normal_indices.resize(m.triangles.len(), [u32::MAX; 3]);
         }
+        normalize(&mut m.normals);
         if !m.uv_indices.is_empty() && m.uv_indices.len() != m.triangles.len() {
             m.uv_indices.clear();
         }
@@ -199,6 +200,7 @@ impl Evaluator<'_> {
             }
         }
         if has_normals && m.normals.len() == m.positions.len() {
+            normalize(&mut m.normals);
             m.normal_indices = m.triangles.clone();
         } else {
             m.normals.clear();
@@ -290,8 +292,10 @@ impl Evaluator<'_> {
                 {
                     continue;
                 }
-                m.triangles.push([q[0], q[2], q[1]]);
-                m.triangles.push([q[1], q[2], q[3]]);
+                // Split along the diagonal from (x, z + dz) to (x + dx, z), as
+                // POV-Ray does (checked against its pictures).
+                m.triangles.push([q[0], q[2], q[3]]);
+                m.triangles.push([q[0], q[3], q[1]]);
             }
         }
         if smooth {
@@ -306,10 +310,18 @@ impl Evaluator<'_> {
                     m.normals.push([-hx / sx, 1.0, -hz / sz]);
                 }
             }
+            normalize(&mut m.normals);
             m.normal_indices = m.triangles.clone();
         }
         m.inside_vector = Some(glam::DVec3::Y);
         Ok(Object::new(Shape::Mesh(Arc::new(m)), span))
+    }
+}
+
+fn normalize(normals: &mut [[f32; 3]]) {
+    for n in normals {
+        let v = glam::Vec3::from(*n).normalize_or_zero();
+        *n = [v.x, v.y, v.z];
     }
 }
 

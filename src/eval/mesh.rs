@@ -227,7 +227,14 @@ impl Evaluator<'_> {
                 .collect()
         };
         data.positions = vec3s(self, 0)?;
-        data.normals = vec3s(self, 1)?;
+        // Normals are unit length before interpolation, as in POV-Ray.
+        data.normals = vec3s(self, 1)?
+            .into_iter()
+            .map(|n| {
+                let v = glam::Vec3::from(n).normalize_or_zero();
+                [v.x, v.y, v.z]
+            })
+            .collect();
         if let Some((l, s)) = &lists[2] {
             for (v, s) in self.counted(LISTS[2], l, *s, false)? {
                 match v {
