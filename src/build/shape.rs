@@ -304,10 +304,18 @@ impl PrimShape {
         }
     }
 
-    /// The shape's uv coordinates at `p` where it defines them (meshes with
-    /// `uv_vectors`).
+    /// The shape's uv coordinates at `p` where it defines them: spheres
+    /// (POV-Ray's: u = longitude `atan2(z, x) / 2π` in [0, 1), v = latitude from 0
+    /// at the bottom to 1 at the top; measured against POV-Ray's `uv_mapping`) and
+    /// meshes with `uv_vectors`.
     pub fn uv(&self, p: DVec3, sub: u32) -> Option<DVec2> {
         match self {
+            PrimShape::Sphere { center, .. } => {
+                let d = (p - *center).normalize_or_zero();
+                let u = (d.z.atan2(d.x) / std::f64::consts::TAU).rem_euclid(1.0);
+                let v = d.y.clamp(-1.0, 1.0).asin() / std::f64::consts::PI + 0.5;
+                Some(DVec2::new(u, v))
+            }
             PrimShape::Mesh(m) => m.uv(sub, p),
             _ => None,
         }
@@ -400,6 +408,33 @@ fn box_span(min: DVec3, max: DVec3, ray: &Ray) -> Option<(f64, f64)> {
     let near = t0.min(t1).max_element();
     let far = t0.max(t1).min_element();
     (near <= far).then_some((near, far))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sphere_uv_matches_povray_samples() {
+        // (point, u, v) read from POV-Ray 3.7 renders of `uv_mapping gradient x / y`.
+        let s = PrimShape::Sphere {
+            center: DVec3::ONE,
+            radius: 2.0,
+        };
+        for (p, u, v) in [
+            (DVec3::new(0.0, 0.0, -1.0), 0.749, 0.502),
+            (DVec3::new(0.871, 0.0, -0.491), 0.9216, 0.502),
+            (DVec3::new(-0.871, 0.0, -0.491), 0.5804, 0.502),
+            (DVec3::new(0.0, 0.653, -0.757), 0.749, 0.7294),
+            (DVec3::new(0.436, -0.436, -0.788), 0.8314, 0.3569),
+        ] {
+            let uv = s.uv(DVec3::ONE + p * 2.0, 0).unwrap();
+            assert!(
+                (uv.x - u).abs() < 0.006 && (uv.y - v).abs() < 0.006,
+                "{p}: {uv}"
+            );
+        }
+    }
 }
 
 /// Bounds of a convex polyhedron: the box of the vertices where three face
