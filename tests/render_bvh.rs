@@ -180,6 +180,32 @@ proptest! {
         }
     }
 
+    /// Every shape, convex or not (torus, cone, smooth triangle, CSG, mesh): a
+    /// secondary ray never finds its own starting point again (no hit within a
+    /// tiny distance of where it leaves).
+    #[test]
+    fn secondary_rays_leave_every_shape_cleanly(
+        obj in shape_object(),
+        scale in prop_oneof![Just(1.0), Just(1e-3), Just(1e3)],
+        rays in prop::collection::vec((v3(15.0), unit(), unit()), 48),
+    ) {
+        let obj = with_transform(union_of(obj), Transform::scale(DVec3::splat(scale)));
+        let w = world(vec![obj]);
+        for (o, d, out) in rays {
+            let ray = Ray::new(o * scale, d);
+            let Some(hit) = w.intersect(&ray, 0.0, f64::INFINITY, RayKind::Camera) else {
+                continue;
+            };
+            let p = ray.at(hit.t);
+            let n = w.surface(&ray, &hit).geo_normal;
+            let dir = (out - n * n.dot(out) * 0.999).normalize();
+            let (sec, eps) = Ray::secondary(p, n, dir);
+            if let Some(again) = w.intersect(&sec, eps, f64::INFINITY, RayKind::Reflected) {
+                prop_assert!(again.t > 1e-6 * scale, "self-hit at t = {} from {:?}", again.t, p);
+            }
+        }
+    }
+
     #[test]
     fn secondary_rays_do_not_self_intersect(
         obj in placed(convex_object()),

@@ -410,33 +410,6 @@ fn box_span(min: DVec3, max: DVec3, ray: &Ray) -> Option<(f64, f64)> {
     (near <= far).then_some((near, far))
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn sphere_uv_matches_povray_samples() {
-        // (point, u, v) read from POV-Ray 3.7 renders of `uv_mapping gradient x / y`.
-        let s = PrimShape::Sphere {
-            center: DVec3::ONE,
-            radius: 2.0,
-        };
-        for (p, u, v) in [
-            (DVec3::new(0.0, 0.0, -1.0), 0.749, 0.502),
-            (DVec3::new(0.871, 0.0, -0.491), 0.9216, 0.502),
-            (DVec3::new(-0.871, 0.0, -0.491), 0.5804, 0.502),
-            (DVec3::new(0.0, 0.653, -0.757), 0.749, 0.7294),
-            (DVec3::new(0.436, -0.436, -0.788), 0.8314, 0.3569),
-        ] {
-            let uv = s.uv(DVec3::ONE + p * 2.0, 0).unwrap();
-            assert!(
-                (uv.x - u).abs() < 0.006 && (uv.y - v).abs() < 0.006,
-                "{p}: {uv}"
-            );
-        }
-    }
-}
-
 /// Bounds of a convex polyhedron: the box of the vertices where three face
 /// planes meet inside all the others; `None` when that is not closed.
 fn polyhedron_bounds(planes: &[(DVec3, f64)]) -> Option<Aabb> {
@@ -485,4 +458,31 @@ fn box_normal(min: DVec3, max: DVec3, p: DVec3) -> DVec3 {
         }
     }
     best.1
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sphere_uv_matches_povray_samples() {
+        // (point, u, v) read from POV-Ray 3.7 renders of `uv_mapping gradient x / y`.
+        let s = PrimShape::Sphere {
+            center: DVec3::ONE,
+            radius: 2.0,
+        };
+        for (p, u, v) in [
+            (DVec3::new(0.0, 0.0, -1.0), 0.749, 0.502),
+            (DVec3::new(0.871, 0.0, -0.491), 0.9216, 0.502),
+            (DVec3::new(-0.871, 0.0, -0.491), 0.5804, 0.502),
+            (DVec3::new(0.0, 0.653, -0.757), 0.749, 0.7294),
+            (DVec3::new(0.436, -0.436, -0.788), 0.8314, 0.3569),
+        ] {
+            let uv = s.uv(DVec3::ONE + p * 2.0, 0).unwrap();
+            assert!(
+                (uv.x - u).abs() < 0.006 && (uv.y - v).abs() < 0.006,
+                "{p}: {uv}"
+            );
+        }
+    }
 }
