@@ -246,26 +246,33 @@ impl Bvh {
     }
 }
 
-/// Where to split `order` (sitting at `start`), or `None` for a leaf.
-fn choose_split(order: &mut [u32], depth: usize, input: &Input) -> Option<usize> {
+/// Where to split `order` whose centroids span `cb`, or `None` for a leaf.
+fn choose_split(order: &mut [u32], depth: usize, input: &Input, cb: &Box32) -> Option<usize> {
     if order.len() <= MAX_LEAF {
         return None;
     }
-    let cb = order
-        .iter()
-        .fold(Box32::EMPTY, |b, &k| b.grow(input.cents[k as usize]));
     if depth >= MAX_SAH_DEPTH {
         // Deep, lopsided trees could overflow the traversal stack: halve by count.
-        return Some(median_split(order, &input.cents, &cb));
+        return Some(median_split(order, &input.cents, cb));
     }
-    let (axis, pos) = best_split(order, input, &cb)?;
+    let (axis, pos) = best_split(order, input, cb)?;
     Some(
         match partition(order, |&k| input.cents[k as usize][axis] < pos) {
-            0 => median_split(order, &input.cents, &cb),
-            m if m == order.len() => median_split(order, &input.cents, &cb),
+            0 => median_split(order, &input.cents, cb),
+            m if m == order.len() => median_split(order, &input.cents, cb),
             m => m,
         },
     )
+}
+
+/// Bounds of the boxes and of the centroids of `order`, in one pass.
+fn spans(order: &[u32], input: &Input) -> (Box32, Box32) {
+    order
+        .iter()
+        .fold((Box32::EMPTY, Box32::EMPTY), |(b, c), &k| {
+            let k = k as usize;
+            (b.union(&input.boxes[k]), c.grow(input.cents[k]))
+        })
 }
 
 fn leaf_or_inner(bounds: Box32, first: u32, count: u32) -> Node {
@@ -285,10 +292,8 @@ fn build_sub(order: &mut [u32], start: usize, depth: usize, input: &Input) -> Ve
         split_seq(&mut nodes, 0, order, start, depth, input);
         return nodes;
     }
-    let bounds = order
-        .iter()
-        .fold(Box32::EMPTY, |b, &k| b.union(&input.boxes[k as usize]));
-    let Some(mid) = choose_split(order, depth, input) else {
+    let (bounds, cb) = spans(order, input);
+    let Some(mid) = choose_split(order, depth, input, &cb) else {
         return vec![leaf_or_inner(bounds, start as u32, order.len() as u32)];
     };
     let (lo, hi) = order.split_at_mut(mid);
@@ -322,10 +327,8 @@ fn split_seq(
     depth: usize,
     input: &Input,
 ) {
-    let bounds = order
-        .iter()
-        .fold(Box32::EMPTY, |b, &k| b.union(&input.boxes[k as usize]));
-    let Some(mid) = choose_split(order, depth, input) else {
+    let (bounds, cb) = spans(order, input);
+    let Some(mid) = choose_split(order, depth, input, &cb) else {
         nodes[node] = leaf_or_inner(bounds, start as u32, order.len() as u32);
         return;
     };
@@ -339,33 +342,43 @@ fn split_seq(
 }
 
 /// The SAH-best (axis, plane position) over binned centroids, or `None` when no
-/// split beats a leaf.
+/// split beats a leaf. All three axes are binned in one pass over the primitives.
 fn best_split(order: &[u32], input: &Input, cb: &Box32) -> Option<(usize, f32)> {
-    let mut best: Option<(f32, usize, f32)> = None;
+    let ext = cb.max - cb.min;
+    let usable = [0, 1, 2].map(|a| ext[a] > 0.0 && ext[a].is_finite());
+    if !usable.iter().any(|&u| u) {
+        return None;
+    }
+    let scale = Vec3::new(
+        if usable[0] { BINS as f32 / ext.x } else { 0.0 },
+        if usable[1] { BINS as f32 / ext.y } else { 0.0 },
+        if usable[2] { BINS as f32 / ext.z } else { 0.0 },
+    );
+    let mut bins = [[(Box32::EMPTY, 0u32); BINS]; 3];
     let mut parent = Box32::EMPTY;
-    for axis in 0..3 {
-        let (lo, hi) = (cb.min[axis], cb.max[axis]);
-        if hi - lo <= 0.0 || !(hi - lo).is_finite() {
-            continue;
+    for &k in order {
+        let k = k as usize;
+        let b = &input.boxes[k];
+        parent = parent.union(b);
+        let rel = (input.cents[k] - cb.min) * scale;
+        for axis in 0..3 {
+            let i = (rel[axis] as usize).min(BINS - 1);
+            let e = &mut bins[axis][i];
+            e.0 = e.0.union(b);
+            e.1 += 1;
         }
-        let scale = BINS as f32 / (hi - lo);
-        let bin_of = |c: f32| (((c - lo) * scale) as usize).min(BINS - 1);
-        let mut bins = [(Box32::EMPTY, 0usize); BINS];
-        for &k in order {
-            let k = k as usize;
-            let b = &mut bins[bin_of(input.cents[k][axis])];
-            b.0 = b.0.union(&input.boxes[k]);
-            b.1 += 1;
-        }
+    }
+    let mut best: Option<(f32, usize, f32)> = None;
+    for axis in (0..3).filter(|&a| usable[a]) {
+        let bins = &bins[axis];
         // Sweep from the right to get suffix areas and counts.
-        let mut right = [(0.0, 0usize); BINS];
-        let mut acc = (Box32::EMPTY, 0usize);
+        let mut right = [(0.0, 0u32); BINS];
+        let mut acc = (Box32::EMPTY, 0u32);
         for i in (1..BINS).rev() {
             acc = (acc.0.union(&bins[i].0), acc.1 + bins[i].1);
             right[i] = (acc.0.half_area(), acc.1);
         }
-        parent = acc.0.union(&bins[0].0);
-        let mut left = (Box32::EMPTY, 0usize);
+        let mut left = (Box32::EMPTY, 0u32);
         for i in 0..BINS - 1 {
             left = (left.0.union(&bins[i].0), left.1 + bins[i].1);
             let (ra, rn) = right[i + 1];
@@ -374,7 +387,7 @@ fn best_split(order: &[u32], input: &Input, cb: &Box32) -> Option<(usize, f32)> 
             }
             let cost = left.0.half_area() * left.1 as f32 + ra * rn as f32;
             if best.is_none_or(|(c, _, _)| cost < c) {
-                best = Some((cost, axis, lo + (i + 1) as f32 / scale));
+                best = Some((cost, axis, cb.min[axis] + (i + 1) as f32 / scale[axis]));
             }
         }
     }
