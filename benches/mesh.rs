@@ -37,6 +37,18 @@ fn grid(n: u32) -> MeshData {
     m
 }
 
+/// CPU seconds this process has used (user + system), to report work done
+/// independently of how busy the machine is.
+fn cpu_seconds() -> f64 {
+    std::fs::read_to_string("/proc/self/stat")
+        .ok()
+        .and_then(|s| {
+            let f: Vec<&str> = s.rsplit(')').next()?.split_whitespace().collect();
+            Some((f.get(11)?.parse::<f64>().ok()? + f.get(12)?.parse::<f64>().ok()?) / 100.0)
+        })
+        .unwrap_or(0.0)
+}
+
 fn peak_mb() -> f64 {
     std::fs::read_to_string("/proc/self/status")
         .ok()
@@ -74,15 +86,17 @@ fn primary(world: &World, res: u32) -> usize {
 fn mesh(c: &mut Criterion) {
     let base = peak_mb();
     let data = Arc::new(grid(708)); // 1,002,528 triangles
-    let t = std::time::Instant::now();
+    let (t, cpu) = (std::time::Instant::now(), cpu_seconds());
     let accel = MeshAccel::new(data.clone());
     eprintln!(
-        "1M-triangle mesh: {} triangles, {} vertices, one build {:?}, peak memory {:.0} MB (+{:.0} MB over start)",
+        "1M-triangle mesh: {} triangles, {} vertices, one build {:?} ({:.2} CPU s), peak memory {:.0} MB (+{:.0} MB over start), BVH {:.0} MB",
         data.triangles.len(),
         data.positions.len(),
         t.elapsed(),
+        cpu_seconds() - cpu,
         peak_mb(),
-        peak_mb() - base
+        peak_mb() - base,
+        accel.bvh.memory() as f64 / 1048576.0
     );
     drop(accel);
     let mut g = c.benchmark_group("mesh 1M triangles");
@@ -94,6 +108,15 @@ fn mesh(c: &mut Criterion) {
     };
     let world = build(&scene);
     let res = 1024u32;
+    let (t, cpu) = (std::time::Instant::now(), cpu_seconds());
+    let hits = primary(&world, res);
+    let cpu = cpu_seconds() - cpu;
+    eprintln!(
+        "primary rays: {} rays ({hits} hits) in {:?} wall, {cpu:.2} CPU s: {:.2} Mrays per CPU second",
+        res * res,
+        t.elapsed(),
+        (res * res) as f64 / cpu.max(1e-9) / 1e6
+    );
     g.throughput(Throughput::Elements((res * res) as u64));
     g.bench_function("primary rays (elements = rays)", |b| {
         b.iter(|| primary(&world, res))
