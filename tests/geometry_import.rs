@@ -124,3 +124,28 @@ fn height_field_spans_the_unit_square() {
     assert!(w.inside(glam::DVec3::new(0.9, 0.01, 0.5)));
     assert!(!w.inside(glam::DVec3::new(0.9, 0.99, 0.5)));
 }
+
+#[test]
+fn a_declared_mesh_placed_many_times_is_stored_once() {
+    let d = folder("instances");
+    let (scene, codes) = run(
+        &d,
+        "#declare M = mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } face_indices { 1, <0,1,2> } }\n\
+         #for (I, 0, 9) object { M translate I*x } #end\n\
+         object { M rotate 30*y pigment { rgb 1 } }\n",
+    );
+    assert!(codes.is_empty(), "{codes:?}");
+    assert_eq!(scene.objects.len(), 11);
+    let first = match &scene.objects[0].shape {
+        Shape::Mesh(m) => m.clone(),
+        _ => panic!("not a mesh"),
+    };
+    for o in &scene.objects {
+        match &o.shape {
+            Shape::Mesh(m) => assert!(std::sync::Arc::ptr_eq(m, &first)),
+            _ => panic!("not a mesh"),
+        }
+    }
+    let w = build(&scene);
+    assert_eq!(w.primitives.len(), 11);
+}
