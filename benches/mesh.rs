@@ -1,7 +1,11 @@
 #![allow(missing_docs)] // criterion_group! generates an undocumented function
 //! Mesh speed: BVH build over a 1M-triangle mesh and primary-ray throughput.
 //! Targets (issue 3): build ≤ 0.4 s, ≥ 5 Mrays/s on 2 cores, ≤ 120 MB for the mesh.
-//! Run with `cargo bench --bench mesh`; the setup prints peak memory (VmHWM).
+//! Run with `cargo bench --bench mesh`; the setup prints peak memory (VmHWM),
+//! and CPU seconds next to wall time, since a shared machine's wall times vary.
+//! Measured (2026-11, a 2-core machine under load ≈ 5): one build 0.50 s wall /
+//! 0.52 CPU s; primary rays 1.9 Mrays/s wall, 1.87 Mrays per CPU second; peak
+//! memory 104 MB for the whole process (mesh 18 MB, BVH 22 MB).
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use glam::DVec3;
