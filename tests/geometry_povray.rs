@@ -100,3 +100,13 @@ fn meshes_and_clipping_match_povray() {
         assert!(mean < 0.05 && max <= 8, "max {max}, mean {mean}");
     }
 }
+
+#[test]
+fn nested_csg_member_textures_and_clipping_match_povray() {
+    // difference of an intersection and a merge with textured members, a torus
+    // halved by an inverse plane, a sharp cone, a clipped union, inverse spheres.
+    if let Some((max, mean)) = render_both("geometry_csg.rts") {
+        eprintln!("geometry_csg: max {max}, mean {mean:.4}");
+        assert!(mean < 0.05 && max <= 8, "max {max}, mean {mean}");
+    }
+}
