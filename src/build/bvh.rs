@@ -1,27 +1,113 @@
-//! A bounding volume hierarchy over the bounded primitives, built with binned SAH.
+//! A bounding volume hierarchy built with binned SAH, in parallel near the root.
+//! Nodes hold f32 bounds rounded outwards (32 bytes a node), so a mesh of a
+//! million triangles keeps its tree small; rays stay f64.
 
 use super::{Aabb, Ray};
-use glam::DVec3;
+use glam::{DVec3, Vec3};
 
 /// Number of SAH bins per axis.
 const BINS: usize = 16;
 /// Most primitives a leaf holds before splitting is considered.
 const MAX_LEAF: usize = 4;
 /// Cost of one node traversal relative to one primitive test.
-const TRAVERSAL_COST: f64 = 1.0;
+const TRAVERSAL_COST: f32 = 1.0;
 /// Depth after which nodes are halved by count, so depth stays below [`STACK`]
 /// (64 + log2 of the primitive count).
 const MAX_SAH_DEPTH: usize = 64;
 /// Traversal stack size.
 const STACK: usize = 128;
+/// Subtrees with more primitives than this, near the root, are built in parallel.
+const PAR_MIN: usize = 20_000;
+/// Parallel build down to this depth (2^depth tasks).
+const PAR_DEPTH: usize = 6;
+
+/// An f32 box.
+#[derive(Clone, Copy, Debug)]
+struct Box32 {
+    min: Vec3,
+    max: Vec3,
+}
+
+impl Box32 {
+    const EMPTY: Box32 = Box32 {
+        min: Vec3::splat(f32::INFINITY),
+        max: Vec3::splat(f32::NEG_INFINITY),
+    };
+
+    /// The f32 box holding `b` (rounded outwards).
+    fn from_aabb(b: &Aabb) -> Box32 {
+        let down = |x: f64| {
+            let f = x as f32;
+            if (f as f64) > x {
+                f.next_down()
+            } else {
+                f
+            }
+        };
+        let up = |x: f64| {
+            let f = x as f32;
+            if (f as f64) < x {
+                f.next_up()
+            } else {
+                f
+            }
+        };
+        Box32 {
+            min: Vec3::new(down(b.min.x), down(b.min.y), down(b.min.z)),
+            max: Vec3::new(up(b.max.x), up(b.max.y), up(b.max.z)),
+        }
+    }
+
+    fn union(&self, o: &Box32) -> Box32 {
+        Box32 {
+            min: self.min.min(o.min),
+            max: self.max.max(o.max),
+        }
+    }
+
+    fn grow(&self, p: Vec3) -> Box32 {
+        Box32 {
+            min: self.min.min(p),
+            max: self.max.max(p),
+        }
+    }
+
+    fn half_area(&self) -> f32 {
+        if self.min.cmpgt(self.max).any() {
+            return 0.0;
+        }
+        let d = self.max - self.min;
+        d.x * d.y + d.y * d.z + d.z * d.x
+    }
+}
 
 /// One flattened node: an interior node's children are `first` and `first + 1`; a
 /// leaf holds `count` entries of [`Bvh::prims`] starting at `first`.
 #[derive(Clone, Copy, Debug)]
 struct Node {
-    bounds: Aabb,
-    first: u32,
+    min: Vec3,
     count: u32,
+    max: Vec3,
+    first: u32,
+}
+
+impl Node {
+    const EMPTY: Node = Node {
+        min: Vec3::ZERO,
+        count: 0,
+        max: Vec3::ZERO,
+        first: 0,
+    };
+
+    /// Entry distance of `ray` within `(t_min, t_max)`.
+    #[inline]
+    fn hit(&self, ray: &Ray, inv: DVec3, t_min: f64, t_max: f64) -> Option<f64> {
+        let t0 = (self.min.as_dvec3() - ray.origin) * inv;
+        let t1 = (self.max.as_dvec3() - ray.origin) * inv;
+        let near = t0.min(t1).max_element().max(t_min);
+        let far = t0.max(t1).min_element().min(t_max);
+        (near <= far).then_some(near)
+    }
 }
 
 /// A binned-SAH BVH over primitive indices.
@@ -32,92 +118,63 @@ pub struct Bvh {
     prims: Vec<u32>,
 }
 
+/// The build inputs shared by all tasks.
+struct Input {
+    boxes: Vec<Box32>,
+    cents: Vec<Vec3>,
+}
+
 impl Bvh {
     /// Builds a hierarchy over `items`: (primitive index, world bounds).
     pub fn build(items: &[(u32, Aabb)]) -> Bvh {
-        let mut bvh = Bvh {
-            nodes: Vec::with_capacity(2 * items.len().max(1)),
-            prims: items.iter().map(|&(i, _)| i).collect(),
-        };
-        if items.is_empty() {
-            return bvh;
+        let boxes = items.iter().map(|(_, b)| Box32::from_aabb(b)).collect();
+        let mut bvh = Bvh::build_from(boxes);
+        for p in &mut bvh.prims {
+            *p = items[*p as usize].0;
         }
-        let boxes: Vec<Aabb> = items.iter().map(|&(_, b)| b).collect();
-        let centroids: Vec<DVec3> = boxes.iter().map(Aabb::centroid).collect();
-        let mut order: Vec<usize> = (0..items.len()).collect();
-        bvh.nodes.push(Node {
-            bounds: Aabb::EMPTY,
-            first: 0,
-            count: 0,
-        });
-        bvh.split(0, &mut order, 0, 0, &boxes, &centroids);
-        bvh.prims = order.iter().map(|&k| items[k].0).collect();
         bvh
     }
 
-    /// Fills node `node` with `order`, which sits at `start` in the final order,
-    /// recursing; `depth` bounds the traversal stack.
-    fn split(
-        &mut self,
-        node: usize,
-        order: &mut [usize],
-        start: usize,
-        depth: usize,
-        boxes: &[Aabb],
-        cents: &[DVec3],
-    ) {
-        let bounds = order.iter().fold(Aabb::EMPTY, |b, &k| b.union(&boxes[k]));
-        self.nodes[node] = Node {
-            bounds,
-            first: start as u32,
-            count: order.len() as u32,
-        };
-        if order.len() <= MAX_LEAF {
-            return;
+    /// Builds a hierarchy over primitives `0..n` whose bounds `bounds(i)` gives.
+    pub fn build_indexed(n: usize, bounds: impl Fn(usize) -> Aabb + Sync) -> Bvh {
+        use rayon::prelude::*;
+        let boxes = (0..n)
+            .into_par_iter()
+            .map(|i| Box32::from_aabb(&bounds(i)))
+            .collect();
+        Bvh::build_from(boxes)
+    }
+
+    fn build_from(boxes: Vec<Box32>) -> Bvh {
+        if boxes.is_empty() {
+            return Bvh::default();
         }
-        let cb = order.iter().fold(Aabb::EMPTY, |b, &k| b.grow(cents[k]));
-        let mid = if depth >= MAX_SAH_DEPTH {
-            // Deep, lopsided trees could overflow the traversal stack: halve by count.
-            median_split(order, cents, &cb)
-        } else {
-            let Some((axis, pos)) = best_split(order, boxes, cents, &cb) else {
-                return;
-            };
-            match partition(order, |&k| cents[k][axis] < pos) {
-                0 => median_split(order, cents, &cb),
-                m if m == order.len() => median_split(order, cents, &cb),
-                m => m,
-            }
-        };
-        let left = self.nodes.len();
-        self.nodes.push(Node {
-            bounds: Aabb::EMPTY,
-            first: 0,
-            count: 0,
-        });
-        self.nodes.push(Node {
-            bounds: Aabb::EMPTY,
-            first: 0,
-            count: 0,
-        });
-        self.nodes[node] = Node {
-            bounds,
-            first: left as u32,
-            count: 0,
-        };
-        let (lo, hi) = order.split_at_mut(mid);
-        self.split(left, lo, start, depth + 1, boxes, cents);
-        self.split(left + 1, hi, start + mid, depth + 1, boxes, cents);
+        let cents = boxes.iter().map(|b| (b.min + b.max) * 0.5).collect();
+        let input = Input { boxes, cents };
+        let mut order: Vec<u32> = (0..input.boxes.len() as u32).collect();
+        let mut nodes = build_sub(&mut order, 0, 0, &input);
+        nodes.shrink_to_fit();
+        Bvh {
+            nodes,
+            prims: order,
+        }
     }
 
     /// World bounds of everything in the hierarchy.
     pub fn bounds(&self) -> Aabb {
-        self.nodes.first().map_or(Aabb::EMPTY, |n| n.bounds)
+        self.nodes.first().map_or(Aabb::EMPTY, |n| {
+            Aabb::new(n.min.as_dvec3(), n.max.as_dvec3())
+        })
     }
 
     /// Number of nodes (for statistics and tests).
     pub fn node_count(&self) -> usize {
         self.nodes.len()
+    }
+
+    /// Bytes held by the hierarchy.
+    pub fn memory(&self) -> usize {
+        self.nodes.capacity() * std::mem::size_of::<Node>() + self.prims.capacity() * 4
     }
 
     /// Visits leaves the ray may hit, nearest-first. `visit(prim, t_max)` tests one
@@ -138,7 +195,7 @@ impl Bvh {
         let mut stack = [0u32; STACK];
         let mut sp = 0usize;
         let mut node = 0usize;
-        if self.nodes[0].bounds.hit(ray, inv, t_min, t_max).is_none() {
+        if self.nodes[0].hit(ray, inv, t_min, t_max).is_none() {
             return;
         }
         loop {
@@ -152,8 +209,8 @@ impl Bvh {
                 }
             } else {
                 let (a, b) = (n.first as usize, n.first as usize + 1);
-                let ta = self.nodes[a].bounds.hit(ray, inv, t_min, t_max);
-                let tb = self.nodes[b].bounds.hit(ray, inv, t_min, t_max);
+                let ta = self.nodes[a].hit(ray, inv, t_min, t_max);
+                let tb = self.nodes[b].hit(ray, inv, t_min, t_max);
                 match (ta, tb) {
                     (Some(x), Some(y)) => {
                         let (near, far) = if x <= y { (a, b) } else { (b, a) };
@@ -180,11 +237,7 @@ impl Bvh {
                 }
                 sp -= 1;
                 let cand = stack[sp] as usize;
-                if self.nodes[cand]
-                    .bounds
-                    .hit(ray, inv, t_min, t_max)
-                    .is_some()
-                {
+                if self.nodes[cand].hit(ray, inv, t_min, t_max).is_some() {
                     node = cand;
                     break;
                 }
@@ -193,54 +246,158 @@ impl Bvh {
     }
 }
 
+/// Where to split `order` whose centroids span `cb`, or `None` for a leaf.
+fn choose_split(order: &mut [u32], depth: usize, input: &Input, cb: &Box32) -> Option<usize> {
+    if order.len() <= MAX_LEAF {
+        return None;
+    }
+    if depth >= MAX_SAH_DEPTH {
+        // Deep, lopsided trees could overflow the traversal stack: halve by count.
+        return Some(median_split(order, &input.cents, cb));
+    }
+    let (axis, pos) = best_split(order, input, cb)?;
+    Some(
+        match partition(order, |&k| input.cents[k as usize][axis] < pos) {
+            0 => median_split(order, &input.cents, cb),
+            m if m == order.len() => median_split(order, &input.cents, cb),
+            m => m,
+        },
+    )
+}
+
+/// Bounds of the boxes and of the centroids of `order`, in one pass.
+fn spans(order: &[u32], input: &Input) -> (Box32, Box32) {
+    order
+        .iter()
+        .fold((Box32::EMPTY, Box32::EMPTY), |(b, c), &k| {
+            let k = k as usize;
+            (b.union(&input.boxes[k]), c.grow(input.cents[k]))
+        })
+}
+
+fn leaf_or_inner(bounds: Box32, first: u32, count: u32) -> Node {
+    Node {
+        min: bounds.min,
+        max: bounds.max,
+        first,
+        count,
+    }
+}
+
+/// The nodes of the subtree over `order` (at `start` in the final order), its root
+/// first; interior nodes' `first` index into the returned vector.
+fn build_sub(order: &mut [u32], start: usize, depth: usize, input: &Input) -> Vec<Node> {
+    if depth >= PAR_DEPTH || order.len() < PAR_MIN {
+        let mut nodes = vec![Node::EMPTY];
+        split_seq(&mut nodes, 0, order, start, depth, input);
+        return nodes;
+    }
+    let (bounds, cb) = spans(order, input);
+    let Some(mid) = choose_split(order, depth, input, &cb) else {
+        return vec![leaf_or_inner(bounds, start as u32, order.len() as u32)];
+    };
+    let (lo, hi) = order.split_at_mut(mid);
+    let (l, r) = rayon::join(
+        || build_sub(lo, start, depth + 1, input),
+        || build_sub(hi, start + mid, depth + 1, input),
+    );
+    // Layout: [root, l root, r root, l rest…, r rest…].
+    let mut nodes = Vec::with_capacity(1 + l.len() + r.len());
+    nodes.push(leaf_or_inner(bounds, 1, 0));
+    let shift = |mut n: Node, by: usize| {
+        if n.count == 0 {
+            n.first += by as u32;
+        }
+        n
+    };
+    let (l_by, r_by) = (2, l.len() + 1);
+    nodes.push(shift(l[0], l_by));
+    nodes.push(shift(r[0], r_by));
+    nodes.extend(l[1..].iter().map(|&n| shift(n, l_by)));
+    nodes.extend(r[1..].iter().map(|&n| shift(n, r_by)));
+    nodes
+}
+
+/// Fills node `node` of `nodes` with `order`, recursing sequentially.
+fn split_seq(
+    nodes: &mut Vec<Node>,
+    node: usize,
+    order: &mut [u32],
+    start: usize,
+    depth: usize,
+    input: &Input,
+) {
+    let (bounds, cb) = spans(order, input);
+    let Some(mid) = choose_split(order, depth, input, &cb) else {
+        nodes[node] = leaf_or_inner(bounds, start as u32, order.len() as u32);
+        return;
+    };
+    let left = nodes.len();
+    nodes.push(Node::EMPTY);
+    nodes.push(Node::EMPTY);
+    nodes[node] = leaf_or_inner(bounds, left as u32, 0);
+    let (lo, hi) = order.split_at_mut(mid);
+    split_seq(nodes, left, lo, start, depth + 1, input);
+    split_seq(nodes, left + 1, hi, start + mid, depth + 1, input);
+}
+
 /// The SAH-best (axis, plane position) over binned centroids, or `None` when no
-/// split beats a leaf.
-fn best_split(order: &[usize], boxes: &[Aabb], cents: &[DVec3], cb: &Aabb) -> Option<(usize, f64)> {
-    let mut best: Option<(f64, usize, f64)> = None;
-    for axis in 0..3 {
-        let (lo, hi) = (cb.min[axis], cb.max[axis]);
-        if hi - lo <= 0.0 || !(hi - lo).is_finite() {
-            continue;
+/// split beats a leaf. All three axes are binned in one pass over the primitives.
+fn best_split(order: &[u32], input: &Input, cb: &Box32) -> Option<(usize, f32)> {
+    let ext = cb.max - cb.min;
+    let usable = [0, 1, 2].map(|a| ext[a] > 0.0 && ext[a].is_finite());
+    if !usable.iter().any(|&u| u) {
+        return None;
+    }
+    let scale = Vec3::new(
+        if usable[0] { BINS as f32 / ext.x } else { 0.0 },
+        if usable[1] { BINS as f32 / ext.y } else { 0.0 },
+        if usable[2] { BINS as f32 / ext.z } else { 0.0 },
+    );
+    let mut bins = [[(Box32::EMPTY, 0u32); BINS]; 3];
+    let mut parent = Box32::EMPTY;
+    for &k in order {
+        let k = k as usize;
+        let b = &input.boxes[k];
+        parent = parent.union(b);
+        let rel = (input.cents[k] - cb.min) * scale;
+        for axis in 0..3 {
+            let i = (rel[axis] as usize).min(BINS - 1);
+            let e = &mut bins[axis][i];
+            e.0 = e.0.union(b);
+            e.1 += 1;
         }
-        let scale = BINS as f64 / (hi - lo);
-        let bin_of = |c: f64| (((c - lo) * scale) as usize).min(BINS - 1);
-        let mut bins = [(Aabb::EMPTY, 0usize); BINS];
-        for &k in order {
-            let b = &mut bins[bin_of(cents[k][axis])];
-            b.0 = b.0.union(&boxes[k]);
-            b.1 += 1;
-        }
+    }
+    let mut best: Option<(f32, usize, f32)> = None;
+    for axis in (0..3).filter(|&a| usable[a]) {
+        let bins = &bins[axis];
         // Sweep from the right to get suffix areas and counts.
-        let mut right = [(0.0, 0usize); BINS];
-        let mut acc = (Aabb::EMPTY, 0usize);
+        let mut right = [(0.0, 0u32); BINS];
+        let mut acc = (Box32::EMPTY, 0u32);
         for i in (1..BINS).rev() {
             acc = (acc.0.union(&bins[i].0), acc.1 + bins[i].1);
             right[i] = (acc.0.half_area(), acc.1);
         }
-        let mut left = (Aabb::EMPTY, 0usize);
+        let mut left = (Box32::EMPTY, 0u32);
         for i in 0..BINS - 1 {
             left = (left.0.union(&bins[i].0), left.1 + bins[i].1);
             let (ra, rn) = right[i + 1];
             if left.1 == 0 || rn == 0 {
                 continue;
             }
-            let cost = left.0.half_area() * left.1 as f64 + ra * rn as f64;
+            let cost = left.0.half_area() * left.1 as f32 + ra * rn as f32;
             if best.is_none_or(|(c, _, _)| cost < c) {
-                best = Some((cost, axis, lo + (i + 1) as f64 / scale));
+                best = Some((cost, axis, cb.min[axis] + (i + 1) as f32 / scale[axis]));
             }
         }
     }
-    let parent_area = order
-        .iter()
-        .fold(Aabb::EMPTY, |b, &k| b.union(&boxes[k]))
-        .half_area();
     let (cost, axis, pos) = best?;
-    let split_cost = TRAVERSAL_COST + cost / parent_area.max(f64::MIN_POSITIVE);
-    (split_cost < order.len() as f64 || order.len() > 4 * MAX_LEAF).then_some((axis, pos))
+    let split_cost = TRAVERSAL_COST + cost / parent.half_area().max(f32::MIN_POSITIVE);
+    (split_cost < order.len() as f32 || order.len() > 4 * MAX_LEAF).then_some((axis, pos))
 }
 
 /// Splits `order` in two equal halves along the widest centroid axis.
-fn median_split(order: &mut [usize], cents: &[DVec3], cb: &Aabb) -> usize {
+fn median_split(order: &mut [u32], cents: &[Vec3], cb: &Box32) -> usize {
     let ext = cb.max - cb.min;
     let axis = if ext.x >= ext.y && ext.x >= ext.z {
         0
@@ -250,7 +407,9 @@ fn median_split(order: &mut [usize], cents: &[DVec3], cb: &Aabb) -> usize {
         2
     };
     let mid = order.len() / 2;
-    order.select_nth_unstable_by(mid, |&a, &b| cents[a][axis].total_cmp(&cents[b][axis]));
+    order.select_nth_unstable_by(mid, |&a, &b| {
+        cents[a as usize][axis].total_cmp(&cents[b as usize][axis])
+    });
     mid
 }
 
@@ -264,4 +423,36 @@ fn partition<T>(v: &mut [T], pred: impl Fn(&T) -> bool) -> usize {
         }
     }
     i
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parallel_and_sequential_builds_find_the_same_leaves() {
+        // Enough boxes to take the parallel path; every box is found by a ray
+        // straight through its centre.
+        let n = 50_000;
+        let bvh = Bvh::build_indexed(n, |i| {
+            let c = DVec3::new((i % 250) as f64, (i / 250) as f64, 0.0);
+            Aabb::new(c - DVec3::splat(0.3), c + DVec3::splat(0.3))
+        });
+        let mut seen = vec![false; n];
+        for &p in &bvh.prims {
+            seen[p as usize] = true;
+        }
+        assert!(seen.iter().all(|&s| s));
+        for i in (0..n).step_by(997) {
+            let c = DVec3::new((i % 250) as f64, (i / 250) as f64, -5.0);
+            let mut found = false;
+            bvh.traverse(&Ray::new(c, DVec3::Z), 0.0, f64::INFINITY, |p, t| {
+                found |= p as usize == i;
+                Some(t)
+            });
+            assert!(found, "box {i} not reached");
+        }
+        let b = bvh.bounds();
+        assert!(b.min.x <= -0.3 && b.max.x >= 249.3);
+    }
 }

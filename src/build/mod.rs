@@ -8,18 +8,28 @@
 
 mod aabb;
 mod bvh;
+pub mod csg;
+pub mod mesh;
+pub mod quartic;
 mod ray;
 mod shape;
+pub mod shapes;
 
 pub use aabb::Aabb;
 pub use bvh::Bvh;
 pub use ray::{surface_offset, Ray};
-pub use shape::{Hit, PrimShape, Primitive};
+pub use shape::{Hit, PrimShape, Primitive, ShapeHit, SmoothTriangle};
 
 use crate::scene::{
-    Camera, GlobalSettings, Interior, Light, Object, ObjectFlags, Scene, Shape, Texture, Transform,
+    Camera, CsgOp, GlobalSettings, Interior, Light, MeshData, Object, ObjectFlags, Scene, Shape,
+    Texture, Transform,
 };
+use csg::{Csg, CsgLeaf, CsgNode, GroupKind};
 use glam::{DMat4, DVec2, DVec3};
+use mesh::MeshAccel;
+use rustc_hash::FxHashMap;
+use shapes::flat::Polygon;
+use shapes::quadric::Frustum;
 use std::sync::Arc;
 
 /// What a ray is for, which decides the objects it can see.
@@ -68,9 +78,12 @@ pub struct World {
     pub bounds: Aabb,
 }
 
-/// Flattens `scene` and builds its acceleration structure.
+/// Flattens `scene` and builds its acceleration structure. Unions are flattened
+/// into their members; `merge`, `intersection`, `difference` and clipped objects
+/// become one CSG primitive each; every distinct mesh gets one hierarchy, shared
+/// by all objects that use it (instances).
 pub fn build(scene: &Scene) -> World {
-    let mut prims = Vec::new();
+    let mut b = Builder::default();
     let default_texture = Arc::new(Texture::default());
     let inherited = Inherited {
         texture: default_texture,
@@ -79,8 +92,9 @@ pub fn build(scene: &Scene) -> World {
         flags: ObjectFlags::default(),
     };
     for obj in &scene.objects {
-        flatten(obj, None, &inherited, &mut prims);
+        b.flatten(obj, None, &inherited);
     }
+    let mut prims = b.prims;
     // Bounded first keeps BVH indices dense; order is otherwise file order.
     prims.sort_by_key(|p: &Primitive| p.bounds.is_none());
     let items: Vec<(u32, Aabb)> = prims
@@ -104,6 +118,7 @@ pub fn build(scene: &Scene) -> World {
 }
 
 /// What a child takes from its enclosing objects.
+#[derive(Clone)]
 struct Inherited {
     texture: Arc<Texture>,
     /// `world_from_owner` of the object the texture belongs to.
@@ -118,54 +133,259 @@ fn or_flags(a: ObjectFlags, b: ObjectFlags) -> ObjectFlags {
         no_image: a.no_image || b.no_image,
         no_reflection: a.no_reflection || b.no_reflection,
         inverse: a.inverse != b.inverse,
+        hollow: a.hollow || b.hollow,
+        double_illuminate: a.double_illuminate || b.double_illuminate,
     }
 }
 
-/// Appends the primitives of `obj`, whose parent maps to world by `parent`.
-fn flatten(obj: &Object, parent: Option<&Transform>, inh: &Inherited, out: &mut Vec<Primitive>) {
-    let world_from_obj = match (obj.transform.as_deref(), parent) {
-        (None, p) => p.copied(),
-        (Some(t), None) => Some(*t),
-        (Some(t), Some(p)) => Some(t.then(p)),
-    };
-    let here = Inherited {
-        texture: obj.texture.clone().unwrap_or_else(|| inh.texture.clone()),
-        texture_space: if obj.texture.is_some() {
-            world_from_obj
-        } else {
-            inh.texture_space
-        },
-        interior: obj.interior.clone().or_else(|| inh.interior.clone()),
-        flags: or_flags(inh.flags, obj.flags),
-    };
-    let shape = match &obj.shape {
-        Shape::Union { children } => {
+/// Collects primitives; keeps one hierarchy per distinct mesh.
+#[derive(Default)]
+struct Builder {
+    prims: Vec<Primitive>,
+    meshes: FxHashMap<*const MeshData, Arc<MeshAccel>>,
+}
+
+impl Builder {
+    fn mesh(&mut self, m: &Arc<MeshData>) -> Arc<MeshAccel> {
+        self.meshes
+            .entry(Arc::as_ptr(m))
+            .or_insert_with(|| Arc::new(MeshAccel::new(m.clone())))
+            .clone()
+    }
+
+    /// The placement and inheritance of `obj` under a parent at `parent`.
+    fn here(
+        obj: &Object,
+        parent: Option<&Transform>,
+        inh: &Inherited,
+    ) -> (Option<Transform>, Inherited) {
+        let world_from_obj = match (obj.transform.as_deref(), parent) {
+            (None, p) => p.copied(),
+            (Some(t), None) => Some(*t),
+            (Some(t), Some(p)) => Some(t.then(p)),
+        };
+        let here = Inherited {
+            texture: obj.texture.clone().unwrap_or_else(|| inh.texture.clone()),
+            texture_space: if obj.texture.is_some() {
+                world_from_obj
+            } else {
+                inh.texture_space
+            },
+            interior: obj.interior.clone().or_else(|| inh.interior.clone()),
+            flags: or_flags(inh.flags, obj.flags),
+        };
+        (world_from_obj, here)
+    }
+
+    /// Appends the primitives of `obj`, whose parent maps to world by `parent`.
+    fn flatten(&mut self, obj: &Object, parent: Option<&Transform>, inh: &Inherited) {
+        let (world_from_obj, here) = Builder::here(obj, parent, inh);
+        if obj.clipped_by.is_some() || matches!(obj.shape, Shape::Csg { .. }) {
+            let mut leaves = Vec::new();
+            // The object's own inverse is in `here.flags`; the tree takes it.
+            let inner = Inherited {
+                flags: ObjectFlags {
+                    inverse: false,
+                    ..here.flags
+                },
+                ..here.clone()
+            };
+            let mut own = obj.clone();
+            own.flags.inverse = false;
+            let mut root = self.csg_node(&own, parent, inh, &mut leaves);
+            if here.flags.inverse {
+                root.invert(&mut leaves);
+            }
+            let csg = Csg::new(leaves, root);
+            let shape = PrimShape::Csg(Arc::new(csg));
+            let mut p = primitive(shape, None, &inner);
+            p.flags.inverse = false;
+            if p.bounds.is_some_and(|b| b.is_empty()) {
+                return; // an intersection of disjoint parts: nothing to see
+            }
+            self.prims.push(p);
+            return;
+        }
+        if let Shape::Union { children } = &obj.shape {
             for c in children {
-                flatten(c, world_from_obj.as_ref(), &here, out);
+                self.flatten(c, world_from_obj.as_ref(), &here);
             }
             return;
         }
-        Shape::Sphere { center, radius } => PrimShape::Sphere {
-            center: *center,
-            radius: *radius,
-        },
-        Shape::Plane { normal, distance } => PrimShape::Plane {
-            normal: *normal,
-            distance: *distance,
-        },
-        Shape::Box { min, max } => PrimShape::Box {
-            min: min.min(*max),
-            max: max.max(*min),
-        },
-        Shape::Triangle { vertices } => {
-            let v = vertices.map(|p| world_from_obj.map_or(p, |t| t.point(p)));
-            let (a, e1, e2) = (v[0], v[1] - v[0], v[2] - v[0]);
-            let prim_shape = PrimShape::Triangle { a, e1, e2 };
-            out.push(primitive(prim_shape, None, &here));
-            return;
+        let (shape, transform) = self.leaf_shape(&obj.shape, world_from_obj);
+        self.prims.push(primitive(shape, transform, &here));
+    }
+
+    /// The CSG node for `obj` under a parent at `parent` (`inverse` is handled in
+    /// the tree, not in the leaves' flags).
+    fn csg_node(
+        &mut self,
+        obj: &Object,
+        parent: Option<&Transform>,
+        inh: &Inherited,
+        leaves: &mut Vec<CsgLeaf>,
+    ) -> CsgNode {
+        let (world_from_obj, mut here) = Builder::here(obj, parent, inh);
+        let own_inverse = obj.flags.inverse;
+        here.flags.inverse = false;
+        let mut node = match &obj.shape {
+            Shape::Union { children } => CsgNode::Group {
+                kind: GroupKind::Union,
+                children: children
+                    .iter()
+                    .map(|c| self.csg_node(c, world_from_obj.as_ref(), &here, leaves))
+                    .collect(),
+                inverse: false,
+            },
+            Shape::Csg { op, children } => {
+                let mut nodes: Vec<CsgNode> = children
+                    .iter()
+                    .map(|c| self.csg_node(c, world_from_obj.as_ref(), &here, leaves))
+                    .collect();
+                let kind = match op {
+                    CsgOp::Merge => GroupKind::Merge,
+                    CsgOp::Intersection => GroupKind::Intersection,
+                    CsgOp::Difference => {
+                        for n in nodes.iter_mut().skip(1) {
+                            n.invert(leaves);
+                        }
+                        GroupKind::Intersection
+                    }
+                };
+                CsgNode::Group {
+                    kind,
+                    children: nodes,
+                    inverse: false,
+                }
+            }
+            shape => {
+                let (shape, transform) = self.leaf_shape(shape, world_from_obj);
+                let p = primitive(shape, transform, &here);
+                leaves.push(CsgLeaf {
+                    shape: p.shape,
+                    transform: p.transform,
+                    texture: p.texture,
+                    texture_from_world: p.texture_from_world,
+                    interior: p.interior,
+                    inverse: false,
+                    flip: false,
+                    surface: true,
+                    bounds: p.bounds,
+                });
+                CsgNode::Leaf(leaves.len() as u32 - 1)
+            }
+        };
+        if let Some(clips) = &obj.clipped_by {
+            let clips = clips
+                .iter()
+                .map(|c| self.csg_node(c, world_from_obj.as_ref(), &here, leaves))
+                .collect();
+            node = CsgNode::Clip {
+                object: Box::new(node),
+                clips,
+                inverse: false,
+            };
         }
-    };
-    out.push(primitive(shape, world_from_obj, &here));
+        if own_inverse {
+            node.invert(leaves);
+        }
+        node
+    }
+
+    /// The primitive shape of a non-group `shape` and the transform it keeps
+    /// (triangles are baked into world space).
+    fn leaf_shape(
+        &mut self,
+        shape: &Shape,
+        world_from_obj: Option<Transform>,
+    ) -> (PrimShape, Option<Transform>) {
+        let to_world = |p: DVec3| world_from_obj.map_or(p, |t| t.point(p));
+        let shape = match shape {
+            Shape::Sphere { center, radius } => PrimShape::Sphere {
+                center: *center,
+                radius: *radius,
+            },
+            Shape::Plane { normal, distance } => PrimShape::Plane {
+                normal: *normal,
+                distance: *distance,
+            },
+            Shape::Box { min, max } => PrimShape::Box {
+                min: min.min(*max),
+                max: max.max(*min),
+            },
+            Shape::Triangle { vertices } => {
+                let v = vertices.map(to_world);
+                let (a, e1, e2) = (v[0], v[1] - v[0], v[2] - v[0]);
+                return (PrimShape::Triangle { a, e1, e2 }, None);
+            }
+            Shape::SmoothTriangle { vertices, normals } => {
+                let v = vertices.map(to_world);
+                let n = normals.map(|n| {
+                    world_from_obj
+                        .map_or(n, |t| t.normal(n))
+                        .normalize_or_zero()
+                });
+                let (a, e1, e2) = (v[0], v[1] - v[0], v[2] - v[0]);
+                return (
+                    PrimShape::SmoothTriangle(Box::new(SmoothTriangle {
+                        a,
+                        e1,
+                        e2,
+                        normals: n,
+                    })),
+                    None,
+                );
+            }
+            Shape::Cylinder {
+                base,
+                cap,
+                radius,
+                open,
+            } => frustum(*base, *radius, *cap, *radius, *open),
+            Shape::Cone {
+                base,
+                base_radius,
+                cap,
+                cap_radius,
+                open,
+            } => frustum(*base, *base_radius, *cap, *cap_radius, *open),
+            Shape::Torus { major, minor } => PrimShape::Torus {
+                major: *major,
+                minor: *minor,
+            },
+            Shape::Disc {
+                center,
+                normal,
+                radius,
+                hole,
+            } => PrimShape::Disc {
+                center: *center,
+                normal: *normal,
+                r2: radius * radius,
+                hole2: hole * hole,
+            },
+            Shape::Polygon { points } => match Polygon::new(points) {
+                Some(p) => PrimShape::Polygon(Arc::new(p)),
+                None => empty(),
+            },
+            Shape::Polyhedron { planes } => PrimShape::Polyhedron(planes.clone().into()),
+            Shape::Mesh(m) => PrimShape::Mesh(self.mesh(m)),
+            Shape::Union { .. } | Shape::Csg { .. } => empty(),
+        };
+        (shape, world_from_obj)
+    }
+}
+
+/// A shape nothing hits (degenerate input the evaluator already warned about).
+fn empty() -> PrimShape {
+    PrimShape::Sphere {
+        center: DVec3::ZERO,
+        radius: 0.0,
+    }
+}
+
+fn frustum(base: DVec3, r0: f64, cap: DVec3, r1: f64, open: bool) -> PrimShape {
+    Frustum::new(base, r0, cap, r1, open).map_or_else(empty, PrimShape::Frustum)
 }
 
 fn primitive(shape: PrimShape, transform: Option<Transform>, inh: &Inherited) -> Primitive {
@@ -210,15 +430,59 @@ impl World {
     pub fn surface(&self, ray: &Ray, hit: &Hit) -> SurfaceHit<'_> {
         let prim = &self.primitives[hit.prim as usize];
         let p = ray.at(hit.t);
-        let geo_normal = prim.normal(p);
+        let (shape, transform, mut texture, mut texture_from_world, interior, flip) =
+            match &prim.shape {
+                PrimShape::Csg(c) => {
+                    let l = &c.leaves[hit.leaf as usize];
+                    (
+                        &l.shape,
+                        l.transform.as_ref(),
+                        &l.texture,
+                        l.texture_from_world.as_ref(),
+                        l.interior.as_ref(),
+                        l.flip,
+                    )
+                }
+                s => (
+                    s,
+                    prim.transform.as_ref(),
+                    &prim.texture,
+                    prim.texture_from_world.as_ref(),
+                    prim.interior.as_ref(),
+                    false,
+                ),
+            };
+        let local = transform.map_or(p, |t| t.inverse.transform_point3(p));
+        let to_world = |n: DVec3| {
+            let n = transform.map_or(n, |t| t.normal(n)).normalize();
+            if flip {
+                -n
+            } else {
+                n
+            }
+        };
+        let geo_normal = to_world(shape.normal(local, hit.sub));
+        let normal = shape
+            .shading_normal(local, hit.sub)
+            .map_or(geo_normal, to_world);
+        if let PrimShape::Mesh(m) = shape {
+            // A triangle's own texture lives in the mesh's object space.
+            let d = &m.data;
+            if let Some(&[k, ..]) = d.texture_indices.get(hit.sub as usize) {
+                if let Some(t) = d.textures.get(k as usize) {
+                    texture = t;
+                    texture_from_world = transform.map(|t| &t.inverse);
+                }
+            }
+        }
         SurfaceHit {
             p,
             geo_normal,
-            normal: geo_normal,
-            uv: None,
-            texture: &prim.texture,
-            texture_from_world: prim.texture_from_world.as_ref(),
-            interior: prim.interior.as_ref(),
+            normal,
+            uv: shape.uv(local, hit.sub),
+            texture,
+            texture_from_world,
+            interior,
             flags: prim.flags,
         }
     }
@@ -227,21 +491,27 @@ impl World {
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64, kind: RayKind) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let mut t_max = t_max;
+        let found = |i: u32, (t, leaf, sub): ShapeHit| Hit {
+            t,
+            prim: i,
+            leaf,
+            sub,
+        };
         for &i in &self.unbounded {
             let p = &self.primitives[i as usize];
             if kind.sees(&p.flags) {
-                if let Some(t) = p.intersect(ray, t_min, t_max) {
-                    t_max = t;
-                    best = Some(Hit { t, prim: i });
+                if let Some(h) = p.intersect(ray, t_min, t_max) {
+                    t_max = h.0;
+                    best = Some(found(i, h));
                 }
             }
         }
         self.bvh.traverse(ray, t_min, t_max, |i, t_max| {
             let p = &self.primitives[i as usize];
             if kind.sees(&p.flags) {
-                if let Some(t) = p.intersect(ray, t_min, t_max) {
-                    best = Some(Hit { t, prim: i });
-                    return Some(t);
+                if let Some(h) = p.intersect(ray, t_min, t_max) {
+                    best = Some(found(i, h));
+                    return Some(h.0);
                 }
             }
             Some(t_max)
@@ -267,6 +537,22 @@ impl World {
         found
     }
 
+    /// Whether world point `p` is inside any object, by POV-Ray's rules (see
+    /// [`Primitive::inside`]): what refraction uses to decide which medium a ray
+    /// is in. Cost: one bounds test per bounded primitive plus the unbounded ones.
+    pub fn inside(&self, p: DVec3) -> bool {
+        self.inside_which(p).next().is_some()
+    }
+
+    /// The primitives whose inside holds world point `p`.
+    pub fn inside_which(&self, p: DVec3) -> impl Iterator<Item = &Primitive> + '_ {
+        self.primitives.iter().filter(move |prim| {
+            prim.bounds
+                .is_none_or(|b| p.cmpge(b.min).all() && p.cmple(b.max).all())
+                && prim.inside(p)
+        })
+    }
+
     /// [`World::intersect`] by testing every primitive: the reference the BVH is
     /// checked against.
     pub fn intersect_brute_force(
@@ -279,8 +565,13 @@ impl World {
         let mut best: Option<Hit> = None;
         for (i, p) in self.primitives.iter().enumerate() {
             if kind.sees(&p.flags) {
-                if let Some(t) = p.intersect(ray, t_min, best.map_or(t_max, |h| h.t)) {
-                    best = Some(Hit { t, prim: i as u32 });
+                if let Some((t, leaf, sub)) = p.intersect(ray, t_min, best.map_or(t_max, |h| h.t)) {
+                    best = Some(Hit {
+                        t,
+                        prim: i as u32,
+                        leaf,
+                        sub,
+                    });
                 }
             }
         }

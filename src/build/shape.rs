@@ -1,13 +1,32 @@
-//! Flattened primitives and their ray intersections.
+//! Flattened primitives and the dispatch to each shape's intersection code.
 
+use super::csg::Csg;
+use super::mesh::MeshAccel;
+use super::shapes::flat::{self, Polygon};
+use super::shapes::quadric::Frustum;
+use super::shapes::{solid, torus};
 use super::{Aabb, Ray};
 use crate::scene::{Interior, ObjectFlags, Texture, Transform};
-use glam::{DMat4, DVec3};
+use glam::{DMat4, DVec2, DVec3};
 use std::sync::Arc;
 
-/// The geometry of one primitive. Spheres, planes and boxes are kept in object
-/// space; triangles are baked into world space (affine maps keep them triangles).
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// A smooth triangle in world space.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SmoothTriangle {
+    /// First vertex.
+    pub a: DVec3,
+    /// `b - a`.
+    pub e1: DVec3,
+    /// `c - a`.
+    pub e2: DVec3,
+    /// World-space vertex normals.
+    pub normals: [DVec3; 3],
+}
+
+/// The geometry of one primitive. Most shapes are kept in object space (the
+/// primitive's transform places them); triangles are baked into world space
+/// (affine maps keep them triangles); a CSG carries world transforms per leaf.
+#[derive(Clone, Debug)]
 pub enum PrimShape {
     /// A sphere.
     Sphere {
@@ -39,6 +58,36 @@ pub enum PrimShape {
         /// `c - a`.
         e2: DVec3,
     },
+    /// A smooth triangle in world space.
+    SmoothTriangle(Box<SmoothTriangle>),
+    /// A cylinder or cone.
+    Frustum(Frustum),
+    /// A torus around the y axis.
+    Torus {
+        /// Ring radius.
+        major: f64,
+        /// Tube radius.
+        minor: f64,
+    },
+    /// A disc (annulus).
+    Disc {
+        /// Centre.
+        center: DVec3,
+        /// Unit normal.
+        normal: DVec3,
+        /// Outer radius squared.
+        r2: f64,
+        /// Hole radius squared.
+        hole2: f64,
+    },
+    /// A polygon.
+    Polygon(Arc<Polygon>),
+    /// A convex polyhedron: outward face planes `(n, d)`.
+    Polyhedron(Arc<[(DVec3, f64)]>),
+    /// An instance of a shared mesh.
+    Mesh(Arc<MeshAccel>),
+    /// `merge`, `intersection`, `difference` or a clipped object.
+    Csg(Arc<Csg>),
 }
 
 /// One leaf object after flattening: geometry, placement, resolved texture.
@@ -68,12 +117,20 @@ pub struct Hit {
     pub t: f64,
     /// Index of the primitive in [`super::World::primitives`].
     pub prim: u32,
+    /// For a CSG primitive, the index of the leaf hit; else 0.
+    pub leaf: u32,
+    /// Which part of the shape: the triangle of a mesh, the face of a polyhedron,
+    /// side (0) or end cap (1 base, 2 cap) of a cylinder or cone; else 0.
+    pub sub: u32,
 }
 
+/// A hit in a shape's own terms: distance, CSG leaf, part.
+pub type ShapeHit = (f64, u32, u32);
+
 impl Primitive {
-    /// The smallest `t` in `(t_min, t_max)` where `ray` (world space) meets the surface.
+    /// The nearest hit in `(t_min, t_max)` of `ray` (world space).
     #[inline]
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<f64> {
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<ShapeHit> {
         match &self.transform {
             None => self.shape.intersect(ray, t_min, t_max),
             Some(tr) => self
@@ -82,27 +139,37 @@ impl Primitive {
         }
     }
 
-    /// The unit world-space geometric normal at world point `p` (outward for closed
-    /// shapes, `normal` for planes, `e1 × e2` for triangles; not flipped to face
-    /// any ray).
+    /// Whether world point `p` is strictly inside this primitive (POV-Ray's rules:
+    /// planes are half-spaces; open cylinders and cones, triangles, discs,
+    /// polygons and meshes without `inside_vector` are never inside; `inverse`
+    /// swaps inside and outside).
+    pub fn inside(&self, p: DVec3) -> bool {
+        let local = match &self.transform {
+            None => p,
+            Some(tr) => tr.inverse.transform_point3(p),
+        };
+        self.shape.inside(local) != self.flags.inverse
+    }
+
+    /// The unit world-space geometric normal at world point `p` of part `sub`
+    /// (outward for closed shapes, `normal` for planes, `e1 × e2` for triangles;
+    /// not flipped to face any ray). Not for CSG primitives (see
+    /// [`super::World::surface`]).
     pub fn normal(&self, p: DVec3) -> DVec3 {
+        self.normal_of(p, 0)
+    }
+
+    fn normal_of(&self, p: DVec3, sub: u32) -> DVec3 {
         match &self.transform {
-            None => self.shape.normal(p),
-            Some(tr) => tr.normal(self.shape.normal(tr.inverse.transform_point3(p))),
+            None => self.shape.normal(p, sub),
+            Some(tr) => tr.normal(self.shape.normal(tr.inverse.transform_point3(p), sub)),
         }
         .normalize()
     }
 
     /// World-space bounds of this primitive, `None` when unbounded.
     pub fn compute_bounds(shape: &PrimShape, transform: Option<&Transform>) -> Option<Aabb> {
-        let local = match *shape {
-            PrimShape::Plane { .. } => return None,
-            PrimShape::Sphere { center, radius } => {
-                Aabb::new(center - DVec3::splat(radius), center + DVec3::splat(radius))
-            }
-            PrimShape::Box { min, max } => Aabb::new(min, max),
-            PrimShape::Triangle { a, e1, e2 } => Aabb::from_points([a, a + e1, a + e2]),
-        };
+        let local = shape.local_bounds()?;
         Some(match transform {
             None => local,
             Some(tr) => Aabb::from_points(local.corners().map(|c| tr.point(c))),
@@ -111,36 +178,13 @@ impl Primitive {
 }
 
 impl PrimShape {
-    /// Smallest `t` in `(t_min, t_max)` where `ray` (in this shape's space) hits it.
+    /// Nearest hit in `(t_min, t_max)` of `ray` (in this shape's space).
     #[inline]
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<f64> {
-        let accept = |t: f64| (t > t_min && t < t_max).then_some(t);
-        match *self {
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<ShapeHit> {
+        let accept = |t: f64| (t > t_min && t < t_max).then_some((t, 0, 0));
+        match self {
             PrimShape::Sphere { center, radius } => {
-                let oc = ray.origin - center;
-                let a = ray.dir.length_squared();
-                let b = oc.dot(ray.dir);
-                // Discriminant in the form that loses no precision for distant
-                // origins: r² - |oc - (b/a) d|², scaled by a.
-                let perp = oc - ray.dir * (b / a);
-                let disc = radius * radius - perp.length_squared();
-                if disc < 0.0 {
-                    return None;
-                }
-                let root = (a * disc).sqrt();
-                // Stable pair of roots: q = -(b + sign(b) root).
-                let q = -(b + root.copysign(b));
-                let (mut t0, mut t1) = (
-                    q / a,
-                    if q != 0.0 {
-                        (oc.length_squared() - radius * radius) / q
-                    } else {
-                        0.0
-                    },
-                );
-                if t0 > t1 {
-                    std::mem::swap(&mut t0, &mut t1);
-                }
+                let (t0, t1) = sphere_roots(*center, *radius, ray)?;
                 accept(t0).or_else(|| accept(t1))
             }
             PrimShape::Plane { normal, distance } => {
@@ -151,48 +195,251 @@ impl PrimShape {
                 accept((distance - normal.dot(ray.origin)) / denom)
             }
             PrimShape::Box { min, max } => {
-                let inv = ray.dir.recip();
-                let t0 = (min - ray.origin) * inv;
-                let t1 = (max - ray.origin) * inv;
-                let near = t0.min(t1).max_element();
-                let far = t0.max(t1).min_element();
-                if near > far {
-                    return None;
-                }
+                let (near, far) = box_span(*min, *max, ray)?;
                 accept(near).or_else(|| accept(far))
             }
-            PrimShape::Triangle { a, e1, e2 } => {
-                // Möller–Trumbore.
-                let p = ray.dir.cross(e2);
-                let det = e1.dot(p);
-                if det == 0.0 || !det.is_finite() {
-                    return None;
+            PrimShape::Triangle { a, e1, e2 } => accept(flat::triangle(*a, *e1, *e2, ray)?.0),
+            PrimShape::SmoothTriangle(s) => accept(flat::triangle(s.a, s.e1, s.e2, ray)?.0),
+            PrimShape::Disc {
+                center,
+                normal,
+                r2,
+                hole2,
+            } => accept(flat::disc(*center, *normal, *r2, *hole2, ray)?),
+            PrimShape::Polygon(p) => accept(p.hit(ray)?),
+            PrimShape::Polyhedron(planes) => {
+                let ((t0, i0), (t1, i1)) = solid::slab(planes, ray)?;
+                let ok = |t: f64| t > t_min && t < t_max;
+                if ok(t0) {
+                    Some((t0, 0, i0))
+                } else if ok(t1) {
+                    Some((t1, 0, i1))
+                } else {
+                    None
                 }
-                let inv_det = 1.0 / det;
-                let s = ray.origin - a;
-                let u = s.dot(p) * inv_det;
-                if !(0.0..=1.0).contains(&u) {
-                    return None;
-                }
-                let q = s.cross(e1);
-                let v = ray.dir.dot(q) * inv_det;
-                if v < 0.0 || u + v > 1.0 {
-                    return None;
-                }
-                accept(e2.dot(q) * inv_det)
+            }
+            PrimShape::Mesh(m) => m.intersect(ray, t_min, t_max).map(|(t, i)| (t, 0, i)),
+            PrimShape::Csg(c) => c.intersect(ray, t_min, t_max),
+            PrimShape::Frustum(_) | PrimShape::Torus { .. } => {
+                let mut best: Option<ShapeHit> = None;
+                self.hits(ray, t_min, t_max, &mut |t, sub| {
+                    if best.is_none_or(|b| t < b.0) {
+                        best = Some((t, 0, sub));
+                    }
+                });
+                best
             }
         }
     }
 
-    /// Unnormalised geometric normal at `p` (in this shape's space).
-    pub fn normal(&self, p: DVec3) -> DVec3 {
-        match *self {
-            PrimShape::Sphere { center, .. } => p - center,
-            PrimShape::Plane { normal, .. } => normal,
-            PrimShape::Box { min, max } => box_normal(min, max, p),
-            PrimShape::Triangle { e1, e2, .. } => e1.cross(e2),
+    /// Every crossing in `(t_min, t_max)` with its part id, unordered (for CSG).
+    /// A CSG shape reports its nearest hit only.
+    pub fn hits(&self, ray: &Ray, t_min: f64, t_max: f64, f: &mut dyn FnMut(f64, u32)) {
+        let mut put = |t: f64, sub: u32| {
+            if t > t_min && t < t_max {
+                f(t, sub)
+            }
+        };
+        match self {
+            PrimShape::Sphere { center, radius } => {
+                if let Some((t0, t1)) = sphere_roots(*center, *radius, ray) {
+                    put(t0, 0);
+                    put(t1, 0);
+                }
+            }
+            PrimShape::Box { min, max } => {
+                if let Some((t0, t1)) = box_span(*min, *max, ray) {
+                    put(t0, 0);
+                    put(t1, 0);
+                }
+            }
+            PrimShape::Polyhedron(planes) => {
+                if let Some(((t0, i0), (t1, i1))) = solid::slab(planes, ray) {
+                    put(t0, i0);
+                    put(t1, i1);
+                }
+            }
+            PrimShape::Frustum(fr) => fr.hits(ray, t_min, t_max, f),
+            PrimShape::Torus { major, minor } => {
+                torus::hits(*major, *minor, ray, t_min, t_max, &mut |t| f(t, 0))
+            }
+            PrimShape::Mesh(m) => m.hits(ray, t_min, t_max, f),
+            _ => {
+                if let Some((t, _, sub)) = self.intersect(ray, t_min, t_max) {
+                    f(t, sub)
+                }
+            }
         }
     }
+
+    /// Unnormalised outward geometric normal at `p` on part `sub` (this shape's space).
+    pub fn normal(&self, p: DVec3, sub: u32) -> DVec3 {
+        match self {
+            PrimShape::Sphere { center, .. } => p - *center,
+            PrimShape::Plane { normal, .. } => *normal,
+            PrimShape::Box { min, max } => box_normal(*min, *max, p),
+            PrimShape::Triangle { e1, e2, .. } => e1.cross(*e2),
+            PrimShape::SmoothTriangle(s) => s.e1.cross(s.e2),
+            PrimShape::Frustum(f) => f.normal(p, sub),
+            PrimShape::Torus { major, .. } => torus::normal(*major, p),
+            PrimShape::Disc { normal, .. } => *normal,
+            PrimShape::Polygon(pg) => pg.normal,
+            PrimShape::Polyhedron(planes) => planes.get(sub as usize).map_or(DVec3::Y, |pl| pl.0),
+            PrimShape::Mesh(m) => m.normal(sub),
+            PrimShape::Csg(_) => DVec3::Y,
+        }
+    }
+
+    /// The interpolated normal of smooth triangles and meshes with normals
+    /// (unnormalised, this shape's space); `None` where it is the geometric one.
+    pub fn shading_normal(&self, p: DVec3, sub: u32) -> Option<DVec3> {
+        match self {
+            PrimShape::SmoothTriangle(s) => {
+                let (u, v) = flat::barycentric(s.a, s.e1, s.e2, p);
+                let n = s.normals[0] * (1.0 - u - v) + s.normals[1] * u + s.normals[2] * v;
+                (n.length_squared() > 0.0).then_some(n)
+            }
+            PrimShape::Mesh(m) => m.shading_normal(sub, p),
+            _ => None,
+        }
+    }
+
+    /// The shape's uv coordinates at `p` where it defines them: spheres
+    /// (POV-Ray's: u = longitude `atan2(z, x) / 2π` in [0, 1), v = latitude from 0
+    /// at the bottom to 1 at the top; measured against POV-Ray's `uv_mapping`) and
+    /// meshes with `uv_vectors`.
+    pub fn uv(&self, p: DVec3, sub: u32) -> Option<DVec2> {
+        match self {
+            PrimShape::Sphere { center, .. } => {
+                let d = (p - *center).normalize_or_zero();
+                let u = (d.z.atan2(d.x) / std::f64::consts::TAU).rem_euclid(1.0);
+                let v = d.y.clamp(-1.0, 1.0).asin() / std::f64::consts::PI + 0.5;
+                Some(DVec2::new(u, v))
+            }
+            PrimShape::Mesh(m) => m.uv(sub, p),
+            _ => None,
+        }
+    }
+
+    /// Whether `p` (this shape's space) is strictly inside, before `inverse`.
+    pub fn inside(&self, p: DVec3) -> bool {
+        match self {
+            PrimShape::Sphere { center, radius } => {
+                (p - *center).length_squared() < radius * radius
+            }
+            PrimShape::Plane { normal, distance } => normal.dot(p) < *distance,
+            PrimShape::Box { min, max } => p.cmpgt(*min).all() && p.cmplt(*max).all(),
+            PrimShape::Frustum(f) => f.inside(p),
+            PrimShape::Torus { major, minor } => torus::inside(*major, *minor, p),
+            PrimShape::Polyhedron(planes) => solid::inside(planes, p),
+            PrimShape::Mesh(m) => m.inside(p),
+            PrimShape::Csg(c) => c.inside(p),
+            PrimShape::Triangle { .. }
+            | PrimShape::SmoothTriangle(_)
+            | PrimShape::Disc { .. }
+            | PrimShape::Polygon(_) => false,
+        }
+    }
+
+    /// Bounds in this shape's space; `None` when unbounded.
+    pub fn local_bounds(&self) -> Option<Aabb> {
+        Some(match self {
+            PrimShape::Plane { .. } => return None,
+            PrimShape::Sphere { center, radius } => Aabb::new(
+                *center - DVec3::splat(*radius),
+                *center + DVec3::splat(*radius),
+            ),
+            PrimShape::Box { min, max } => Aabb::new(*min, *max),
+            PrimShape::Triangle { a, e1, e2 } => Aabb::from_points([*a, *a + *e1, *a + *e2]),
+            PrimShape::SmoothTriangle(s) => Aabb::from_points([s.a, s.a + s.e1, s.a + s.e2]),
+            PrimShape::Frustum(f) => f.bounds(),
+            PrimShape::Torus { major, minor } => torus::bounds(*major, *minor),
+            PrimShape::Disc {
+                center, normal, r2, ..
+            } => {
+                let e = (DVec3::ONE - *normal * *normal).max(DVec3::ZERO);
+                let ext = DVec3::new(e.x.sqrt(), e.y.sqrt(), e.z.sqrt()) * r2.sqrt();
+                Aabb::new(*center - ext, *center + ext)
+            }
+            PrimShape::Polygon(p) => {
+                let pts = p.edges.iter().map(|e| p.origin + p.u * e.0.x + p.v * e.0.y);
+                Aabb::from_points(pts)
+            }
+            PrimShape::Polyhedron(planes) => polyhedron_bounds(planes)?,
+            PrimShape::Mesh(m) => m.bounds(),
+            PrimShape::Csg(c) => return c.bounds(),
+        })
+    }
+}
+
+/// The two roots of a ray with a sphere, ascending.
+#[inline]
+fn sphere_roots(center: DVec3, radius: f64, ray: &Ray) -> Option<(f64, f64)> {
+    let oc = ray.origin - center;
+    let a = ray.dir.length_squared();
+    let b = oc.dot(ray.dir);
+    // Discriminant in the form that loses no precision for distant origins:
+    // r² - |oc - (b/a) d|², scaled by a.
+    let perp = oc - ray.dir * (b / a);
+    let disc = radius * radius - perp.length_squared();
+    if disc < 0.0 {
+        return None;
+    }
+    let root = (a * disc).sqrt();
+    // Stable pair of roots: q = -(b + sign(b) root).
+    let q = -(b + root.copysign(b));
+    let (t0, t1) = (
+        q / a,
+        if q != 0.0 {
+            (oc.length_squared() - radius * radius) / q
+        } else {
+            0.0
+        },
+    );
+    Some(if t0 > t1 { (t1, t0) } else { (t0, t1) })
+}
+
+/// Entry and exit distances of a ray through a box.
+#[inline]
+fn box_span(min: DVec3, max: DVec3, ray: &Ray) -> Option<(f64, f64)> {
+    let inv = ray.dir.recip();
+    let t0 = (min - ray.origin) * inv;
+    let t1 = (max - ray.origin) * inv;
+    let near = t0.min(t1).max_element();
+    let far = t0.max(t1).min_element();
+    (near <= far).then_some((near, far))
+}
+
+/// Bounds of a convex polyhedron: the box of the vertices where three face
+/// planes meet inside all the others; `None` when that is not closed.
+fn polyhedron_bounds(planes: &[(DVec3, f64)]) -> Option<Aabb> {
+    let mut b = Aabb::EMPTY;
+    let n = planes.len();
+    for i in 0..n {
+        for j in i + 1..n {
+            for k in j + 1..n {
+                let (a, c, e) = (planes[i], planes[j], planes[k]);
+                let det = a.0.dot(c.0.cross(e.0));
+                if det.abs() < 1e-12 {
+                    continue;
+                }
+                let p = (c.0.cross(e.0) * a.1 + e.0.cross(a.0) * c.1 + a.0.cross(c.0) * e.1) / det;
+                let scale = 1e-9 * (1.0 + p.abs().max_element());
+                if planes.iter().all(|&(m, d)| m.dot(p) <= d + scale) {
+                    b = b.grow(p);
+                }
+            }
+        }
+    }
+    // Unbounded if some direction escapes: test the box against every plane set.
+    if b.is_empty() {
+        return None;
+    }
+    let pad = 1e-9 * (1.0 + b.max.abs().max(b.min.abs()).max_element());
+    Some(Aabb::new(
+        b.min - DVec3::splat(pad),
+        b.max + DVec3::splat(pad),
+    ))
 }
 
 /// Normal of the box face nearest to `p`, measured relative to the box size.
@@ -211,4 +458,31 @@ fn box_normal(min: DVec3, max: DVec3, p: DVec3) -> DVec3 {
         }
     }
     best.1
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sphere_uv_matches_povray_samples() {
+        // (point, u, v) read from POV-Ray 3.7 renders of `uv_mapping gradient x / y`.
+        let s = PrimShape::Sphere {
+            center: DVec3::ONE,
+            radius: 2.0,
+        };
+        for (p, u, v) in [
+            (DVec3::new(0.0, 0.0, -1.0), 0.749, 0.502),
+            (DVec3::new(0.871, 0.0, -0.491), 0.9216, 0.502),
+            (DVec3::new(-0.871, 0.0, -0.491), 0.5804, 0.502),
+            (DVec3::new(0.0, 0.653, -0.757), 0.749, 0.7294),
+            (DVec3::new(0.436, -0.436, -0.788), 0.8314, 0.3569),
+        ] {
+            let uv = s.uv(DVec3::ONE + p * 2.0, 0).unwrap();
+            assert!(
+                (uv.x - u).abs() < 0.006 && (uv.y - v).abs() < 0.006,
+                "{p}: {uv}"
+            );
+        }
+    }
 }

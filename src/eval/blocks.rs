@@ -14,6 +14,28 @@ const BLOCKS: &[&str] = &[
     "triangle",
     "union",
     "object",
+    "cylinder",
+    "cone",
+    "height_field",
+    "torus",
+    "disc",
+    "smooth_triangle",
+    "polygon",
+    "mesh",
+    "mesh2",
+    "polyhedron",
+    "merge",
+    "intersection",
+    "difference",
+    "clipped_by",
+    "bounded_by",
+    "vertex_vectors",
+    "normal_vectors",
+    "uv_vectors",
+    "face_indices",
+    "normal_indices",
+    "uv_indices",
+    "texture_list",
     "texture",
     "pigment",
     "finish",
@@ -36,20 +58,7 @@ const BLOCKS: &[&str] = &[
 
 /// POV-Ray blocks that a later release implements.
 const LATER_BLOCKS: &[&str] = &[
-    "cylinder",
-    "cone",
-    "torus",
-    "disc",
-    "smooth_triangle",
-    "polygon",
-    "mesh",
-    "mesh2",
-    "polyhedron",
-    "merge",
-    "intersection",
-    "difference",
     "blob",
-    "height_field",
     "isosurface",
     "julia_fractal",
     "lathe",
@@ -68,8 +77,6 @@ const LATER_BLOCKS: &[&str] = &[
     "radiosity",
     "spline",
     "light_group",
-    "bounded_by",
-    "clipped_by",
 ];
 
 /// Whether `k` opens a block (`k { … }`).
@@ -106,8 +113,14 @@ impl Evaluator<'_> {
         self.expand(&b.items, &mut toks);
         let mut c = Cursor::new(toks.toks, kw, b.span);
         Ok(Some(match kw {
-            "sphere" | "plane" | "box" | "triangle" | "union" | "object" => {
+            "sphere" | "plane" | "box" | "triangle" | "union" | "object" | "cylinder" | "cone"
+            | "torus" | "disc" | "height_field" | "smooth_triangle" | "polygon" | "mesh"
+            | "mesh2" | "polyhedron" | "merge" | "intersection" | "difference" => {
                 Value::Object(std::sync::Arc::new(self.object(&mut c)?))
+            }
+            "clipped_by" | "bounded_by" | "vertex_vectors" | "normal_vectors" | "uv_vectors"
+            | "face_indices" | "normal_indices" | "uv_indices" | "texture_list" => {
+                self.list_block(&mut c)?
             }
             "texture" => Value::Texture(std::sync::Arc::new(self.texture(&mut c)?)),
             "pigment" => Value::Pigment(std::sync::Arc::new(self.pigment(&mut c)?)),

@@ -12,13 +12,16 @@ mod camera;
 mod cursor;
 mod directives;
 mod exprs;
+mod import;
 mod include;
 mod items;
 mod lights;
 mod materials;
+mod mesh;
 mod objects;
 mod patterns;
 mod scope;
+mod shapes;
 pub mod value;
 
 pub use builtins::BUILTIN_NAMES;

@@ -5,7 +5,7 @@ use super::cursor::{Cursor, Tok};
 use super::value::Value;
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
-use crate::scene::{Object, Shape, Texture, Transform};
+use crate::scene::{CsgOp, Object, Shape, Texture, Transform};
 use crate::span::Span;
 use glam::{DMat4, DVec4};
 use std::sync::Arc;
@@ -29,6 +29,8 @@ pub(crate) const OBJECT_MODIFIERS: &[&str] = &[
     "hollow",
     "double_illuminate",
     "sturm",
+    "clipped_by",
+    "bounded_by",
 ];
 
 /// The transform keywords.
@@ -38,7 +40,14 @@ impl Evaluator<'_> {
     /// Evaluates an object block (`c.block` says which).
     pub(crate) fn object(&mut self, c: &mut Cursor) -> R<Object> {
         let span = c.span;
+        if let Some(mut o) = self.new_shape(c)? {
+            self.modifiers(&mut o, c, false);
+            return Ok(o);
+        }
         let mut obj = match c.block {
+            "mesh" => self.mesh(c)?,
+            "mesh2" => self.mesh2(c)?,
+            "height_field" => self.height_field(c)?,
             "sphere" => {
                 let center = self.take_vec3(c, "the sphere's centre")?;
                 c.comma();
@@ -113,23 +122,37 @@ impl Evaluator<'_> {
                     span,
                 )
             }
-            "union" => {
+            "union" | "merge" | "intersection" | "difference" => {
                 let mut children = Vec::new();
                 while let Some(Tok::Block(_, Value::Object(_) | Value::Poison, _)) = c.peek() {
                     if let Some(Tok::Block(_, Value::Object(o), _)) = c.next() {
                         children.push(Arc::try_unwrap(o).unwrap_or_else(|a| (*a).clone()));
                     }
                 }
-                let mut obj = Object::new(Shape::Union { children }, span);
-                self.modifiers(&mut obj, c, true);
-                if let Shape::Union { children } = &obj.shape {
-                    if children.is_empty() {
-                        self.warn(
-                            Diagnostic::warning(codes::MISSING_VALUE, span, "this union has no objects")
-                                .with_help("put objects inside the union, e.g. `union { sphere { … } box { … } }`"),
-                        );
-                    }
+                let kw = c.block;
+                if children.is_empty() {
+                    self.warn(
+                        Diagnostic::warning(codes::MISSING_VALUE, span, format!("this {kw} has no objects"))
+                            .with_help(format!("put objects inside the {kw}, e.g. `{kw} {{ sphere {{ … }} box {{ … }} }}`")),
+                    );
                 }
+                let shape = match kw {
+                    "merge" => Shape::Csg {
+                        op: CsgOp::Merge,
+                        children,
+                    },
+                    "intersection" => Shape::Csg {
+                        op: CsgOp::Intersection,
+                        children,
+                    },
+                    "difference" => Shape::Csg {
+                        op: CsgOp::Difference,
+                        children,
+                    },
+                    _ => Shape::Union { children },
+                };
+                let mut obj = Object::new(shape, span);
+                self.modifiers(&mut obj, c, true);
                 return Ok(obj);
             }
             _ => {
@@ -162,7 +185,7 @@ impl Evaluator<'_> {
         Ok(obj)
     }
 
-    fn bad_size(&self, span: Span, what: &str, v: f64) -> Fail {
+    pub(crate) fn bad_size(&self, span: Span, what: &str, v: f64) -> Fail {
         Diagnostic::error(
             codes::INVALID_SIZE,
             span,
@@ -243,11 +266,60 @@ impl Evaluator<'_> {
             Tok::Kw("no_image", _) => obj.flags.no_image = true,
             Tok::Kw("no_reflection", _) => obj.flags.no_reflection = true,
             Tok::Kw("inverse", _) => obj.flags.inverse = !obj.flags.inverse,
-            Tok::Kw("hollow" | "double_illuminate" | "sturm", _) => {
-                // Accepted as in POV-Ray; they change nothing for the shapes of this release.
-                if c.value_next() {
-                    self.take_float(c, "on or off")?;
+            Tok::Kw(kw @ ("hollow" | "double_illuminate" | "sturm"), _) => {
+                // `sturm` is accepted: the torus solver is always the careful one.
+                let on = if c.value_next() {
+                    self.take_float(c, "on or off")? != 0.0
+                } else {
+                    true
+                };
+                match kw {
+                    "hollow" => obj.flags.hollow = on,
+                    "double_illuminate" => obj.flags.double_illuminate = on,
+                    _ => {}
                 }
+            }
+            Tok::Kw("open", _)
+                if matches!(obj.shape, Shape::Cylinder { .. } | Shape::Cone { .. }) =>
+            {
+                if let Shape::Cylinder { open, .. } | Shape::Cone { open, .. } = &mut obj.shape {
+                    *open = true;
+                }
+            }
+            Tok::Block("clipped_by", Value::Array(a), span) => {
+                // The clipping objects are where they are now; later transforms of
+                // this object move them with it.
+                let inv = obj.transform.as_deref().map(|t| Transform {
+                    matrix: t.inverse,
+                    inverse: t.matrix,
+                });
+                let mut clips = obj.clipped_by.as_deref().cloned().unwrap_or_default();
+                for e in a.elems.iter().flatten() {
+                    match e {
+                        Value::Object(o) => {
+                            let mut o = (**o).clone();
+                            if let Some(inv) = &inv {
+                                apply_transform(&mut o, inv);
+                            }
+                            clips.push(o);
+                        }
+                        Value::Poison => {}
+                        other => return Err(self.mismatch("an object to clip by", other, span)),
+                    }
+                }
+                if clips.is_empty() {
+                    return Err(Diagnostic::error(
+                        codes::MISSING_VALUE,
+                        span,
+                        "`clipped_by` needs an object",
+                    )
+                    .with_help("write e.g. `clipped_by { plane { y, 0 } }`")
+                    .into());
+                }
+                obj.clipped_by = Some(Arc::new(clips));
+            }
+            Tok::Block("bounded_by", _, _) => {
+                // Accepted and ignored: rts bounds every object itself.
             }
             Tok::Block(_, Value::Object(_), span) if !is_union => {
                 return Err(Diagnostic::error(

@@ -19,7 +19,7 @@ pub use material::{
     compose, Colour, Finish, ImageMap, Interior, Mapped, Normal, Pattern, PatternKind, PatternMap,
     PatternMods, Pigment, Reflection, Texture, Wave,
 };
-pub use object::{Object, ObjectFlags, Shape};
+pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape};
 pub use transform::Transform;
 
 use glam::DVec3;

@@ -16,6 +16,10 @@ pub struct ObjectFlags {
     pub no_reflection: bool,
     /// `inverse`: inside and outside swapped.
     pub inverse: bool,
+    /// `hollow`: accepted (it matters for media only, which rts does not have).
+    pub hollow: bool,
+    /// `double_illuminate`: lit from both sides.
+    pub double_illuminate: bool,
 }
 
 /// One object: a shape, its placement and its material.
@@ -34,6 +38,9 @@ pub struct Object {
     pub interior: Option<Arc<Interior>>,
     /// Flags such as `no_shadow`.
     pub flags: ObjectFlags,
+    /// `clipped_by { … }`: only the parts of the shape inside all of these remain
+    /// (the clipping objects' own surfaces are not added).
+    pub clipped_by: Option<Arc<Vec<Object>>>,
     /// Where the object was written.
     pub span: Span,
 }
@@ -47,6 +54,7 @@ impl Object {
             texture: None,
             interior: None,
             flags: ObjectFlags::default(),
+            clipped_by: None,
             span,
         }
     }
@@ -87,4 +95,122 @@ pub enum Shape {
         /// The member objects.
         children: Vec<Object>,
     },
+    /// `cylinder { BASE, CAP, RADIUS [open] }`.
+    Cylinder {
+        /// Centre of the base end.
+        base: DVec3,
+        /// Centre of the cap end.
+        cap: DVec3,
+        /// Radius (> 0).
+        radius: f64,
+        /// `open`: no end caps, and not a solid (inside is always false).
+        open: bool,
+    },
+    /// `cone { BASE, BASE_RADIUS, CAP, CAP_RADIUS [open] }`.
+    Cone {
+        /// Centre of the base end.
+        base: DVec3,
+        /// Radius at the base (>= 0).
+        base_radius: f64,
+        /// Centre of the cap end.
+        cap: DVec3,
+        /// Radius at the cap (>= 0).
+        cap_radius: f64,
+        /// `open`: no end caps, and not a solid.
+        open: bool,
+    },
+    /// `torus { MAJOR, MINOR }`: in the x-z plane around the y axis.
+    Torus {
+        /// Radius of the ring's centre line.
+        major: f64,
+        /// Radius of the tube.
+        minor: f64,
+    },
+    /// `disc { CENTER, NORMAL, RADIUS [, HOLE_RADIUS] }` (not a solid).
+    Disc {
+        /// Centre.
+        center: DVec3,
+        /// Unit normal.
+        normal: DVec3,
+        /// Outer radius.
+        radius: f64,
+        /// Inner radius (0 for none).
+        hole: f64,
+    },
+    /// `smooth_triangle { A, NA, B, NB, C, NC }` (not a solid).
+    SmoothTriangle {
+        /// Vertices.
+        vertices: [DVec3; 3],
+        /// Vertex normals (unnormalised as written).
+        normals: [DVec3; 3],
+    },
+    /// `polygon { N, P1, …, PN }`: closed sub-polygons filled by the even-odd rule,
+    /// in one plane (not a solid).
+    Polygon {
+        /// The points as written (each sub-polygon repeats its first point).
+        points: Vec<DVec3>,
+    },
+    /// `polyhedron { vertex_vectors { … } face_indices { … } }`: the convex solid
+    /// bounded by the face planes (rts's own; see docs/language.md).
+    Polyhedron {
+        /// Face planes `(outward unit normal, d)`: inside is `n·p < d` for all.
+        planes: Vec<(DVec3, f64)>,
+    },
+    /// `mesh { … }` or `mesh2 { … }`: triangles shared by every copy.
+    Mesh(Arc<MeshData>),
+    /// `merge`, `intersection` or `difference` (a `union` is [`Shape::Union`]).
+    Csg {
+        /// Which operation.
+        op: CsgOp,
+        /// The operands, in order.
+        children: Vec<Object>,
+    },
+}
+
+/// A CSG operation other than `union`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CsgOp {
+    /// `merge`: a union without inner surfaces.
+    Merge,
+    /// `intersection`: the points inside every operand.
+    Intersection,
+    /// `difference`: the first operand minus all the others.
+    Difference,
+}
+
+/// The triangles of a `mesh` / `mesh2`, stored compactly (f32 positions, u32
+/// indices) and shared through an [`Arc`] by every object that uses them.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct MeshData {
+    /// Vertex positions.
+    pub positions: Vec<[f32; 3]>,
+    /// Vertex normals (may be empty).
+    pub normals: Vec<[f32; 3]>,
+    /// uv coordinates (may be empty).
+    pub uvs: Vec<[f32; 2]>,
+    /// Per triangle: position indices.
+    pub triangles: Vec<[u32; 3]>,
+    /// Per triangle: normal indices, or empty when no triangle is smooth. A
+    /// triangle whose entry is `[u32::MAX; 3]` is flat.
+    pub normal_indices: Vec<[u32; 3]>,
+    /// Per triangle: uv indices, or empty.
+    pub uv_indices: Vec<[u32; 3]>,
+    /// Textures the triangles refer to.
+    pub textures: Vec<Arc<Texture>>,
+    /// Per triangle: up to three texture indices (one per vertex, as in `mesh2`'s
+    /// `face_indices`; rts uses the first), or empty; `u32::MAX` is "the object's".
+    pub texture_indices: Vec<[u32; 3]>,
+    /// `inside_vector`: makes the mesh a solid (inside by ray parity).
+    pub inside_vector: Option<DVec3>,
+}
+
+impl MeshData {
+    /// The three corners of triangle `i`.
+    #[inline]
+    pub fn corners(&self, i: usize) -> [DVec3; 3] {
+        self.triangles[i].map(|k| {
+            let p = self.positions[k as usize];
+            DVec3::new(p[0] as f64, p[1] as f64, p[2] as f64)
+        })
+    }
 }

@@ -1,0 +1,364 @@
+//! `mesh { triangle { … } smooth_triangle { … } … }` and `mesh2 { vertex_vectors
+//! … face_indices … }`: triangles stored once ([`MeshData`], f32 positions, u32
+//! indices) and shared by every object made from the declared mesh.
+
+use super::cursor::{Cursor, Tok};
+use super::shapes::Listed;
+use super::value::Value;
+use super::{Evaluator, R};
+use crate::diag::{codes, Diagnostic};
+use crate::scene::{MeshData, Object, Shape, Texture};
+use crate::span::Span;
+use glam::DVec3;
+use rustc_hash::FxHashMap;
+use std::sync::Arc;
+
+fn f32x3(v: DVec3) -> [f32; 3] {
+    [v.x as f32, v.y as f32, v.z as f32]
+}
+
+/// Collects `mesh` triangles, sharing equal vertices, normals and textures.
+#[derive(Default)]
+struct MeshBuilder {
+    data: MeshData,
+    positions: FxHashMap<[u32; 3], u32>,
+    normals: FxHashMap<[u32; 3], u32>,
+    textures: FxHashMap<*const Texture, u32>,
+}
+
+impl MeshBuilder {
+    fn index(map: &mut FxHashMap<[u32; 3], u32>, list: &mut Vec<[f32; 3]>, v: DVec3) -> u32 {
+        let p = f32x3(v);
+        *map.entry(p.map(f32::to_bits)).or_insert_with(|| {
+            list.push(p);
+            list.len() as u32 - 1
+        })
+    }
+
+    fn push(&mut self, v: [DVec3; 3], n: Option<[DVec3; 3]>, tex: Option<&Arc<Texture>>) {
+        let d = &mut self.data;
+        let tri = v.map(|p| MeshBuilder::index(&mut self.positions, &mut d.positions, p));
+        d.triangles.push(tri);
+        if let Some(n) = n {
+            if d.normal_indices.len() + 1 < d.triangles.len() {
+                d.normal_indices
+                    .resize(d.triangles.len() - 1, [u32::MAX; 3]);
+            }
+            let ni = n.map(|m| {
+                MeshBuilder::index(&mut self.normals, &mut d.normals, m.normalize_or_zero())
+            });
+            d.normal_indices.push(ni);
+        } else if !d.normal_indices.is_empty() {
+            d.normal_indices.push([u32::MAX; 3]);
+        }
+        if let Some(t) = tex {
+            let k = *self.textures.entry(Arc::as_ptr(t)).or_insert_with(|| {
+                d.textures.push(t.clone());
+                d.textures.len() as u32 - 1
+            });
+            d.texture_indices
+                .resize(d.triangles.len() - 1, [u32::MAX; 3]);
+            d.texture_indices.push([k; 3]);
+        } else if !d.texture_indices.is_empty() {
+            d.texture_indices.push([u32::MAX; 3]);
+        }
+    }
+}
+
+impl Evaluator<'_> {
+    /// `mesh { TRIANGLE… [inside_vector V] }` (modifiers follow, read by the caller).
+    pub(crate) fn mesh(&mut self, c: &mut Cursor) -> R<Object> {
+        let mut b = MeshBuilder::default();
+        loop {
+            match c.peek() {
+                Some(Tok::Kw(kw @ ("obj_file" | "ply_file"), _)) => {
+                    let kw = *kw;
+                    c.next();
+                    if !b.data.triangles.is_empty() {
+                        return Err(Diagnostic::error(
+                            codes::UNEXPECTED_ITEM,
+                            c.last,
+                            format!("`{kw}` must be the only content of its mesh"),
+                        )
+                        .with_help("put the file's mesh and the other triangles in separate meshes")
+                        .into());
+                    }
+                    let mut data = if kw == "obj_file" {
+                        self.obj_mesh(c)?
+                    } else {
+                        self.ply_mesh(c)?
+                    };
+                    if let Some(Tok::Kw("inside_vector", _)) = c.peek() {
+                        c.next();
+                        data.inside_vector = Some(self.inside_vector(c)?);
+                    }
+                    return Ok(Object::new(Shape::Mesh(Arc::new(data)), c.span));
+                }
+                Some(Tok::Block("triangle" | "smooth_triangle", _, _)) => {
+                    let Some(Tok::Block(_, v, s)) = c.next() else {
+                        unreachable!()
+                    };
+                    let Value::Object(o) = v else {
+                        continue; // an erroneous triangle, already reported
+                    };
+                    let place = |p: DVec3| o.transform.as_deref().map_or(p, |t| t.point(p));
+                    match &o.shape {
+                        Shape::Triangle { vertices } => {
+                            b.push(vertices.map(place), None, o.texture.as_ref())
+                        }
+                        Shape::SmoothTriangle { vertices, normals } => {
+                            let n =
+                                normals.map(|n| o.transform.as_deref().map_or(n, |t| t.normal(n)));
+                            b.push(vertices.map(place), Some(n), o.texture.as_ref())
+                        }
+                        _ => {
+                            return Err(Diagnostic::error(
+                                codes::UNEXPECTED_ITEM,
+                                s,
+                                "a mesh holds triangles and smooth_triangles only",
+                            )
+                            .into())
+                        }
+                    }
+                }
+                Some(Tok::Kw("inside_vector", _)) => {
+                    c.next();
+                    b.data.inside_vector = Some(self.inside_vector(c)?);
+                }
+                _ => break,
+            }
+        }
+        if b.data.triangles.is_empty() {
+            return Err(Diagnostic::error(
+                codes::MISSING_VALUE,
+                c.span,
+                "this mesh has no triangles",
+            )
+            .with_help("put triangles in the mesh: `mesh { triangle { A, B, C } … }`")
+            .into());
+        }
+        let mut data = b.data;
+        if !data.normal_indices.is_empty() {
+            data.normal_indices
+                .resize(data.triangles.len(), [u32::MAX; 3]);
+        }
+        if !data.texture_indices.is_empty() {
+            data.texture_indices
+                .resize(data.triangles.len(), [u32::MAX; 3]);
+        }
+        Ok(Object::new(Shape::Mesh(Arc::new(data)), c.span))
+    }
+
+    fn inside_vector(&mut self, c: &mut Cursor) -> R<DVec3> {
+        let (v, s) = c.value("the inside vector")?;
+        let d = self.to_vec3(&v, s)?;
+        if d.length_squared() == 0.0 {
+            return Err(Diagnostic::error(
+                codes::INVALID_SIZE,
+                s,
+                "the inside vector is <0, 0, 0>",
+            )
+            .with_help("give any direction, e.g. `inside_vector y`")
+            .into());
+        }
+        Ok(d)
+    }
+
+    /// `mesh2 { vertex_vectors … normal_vectors … uv_vectors … texture_list …
+    /// face_indices … normal_indices … uv_indices … [inside_vector V] }`.
+    pub(crate) fn mesh2(&mut self, c: &mut Cursor) -> R<Object> {
+        const LISTS: [&str; 7] = [
+            "vertex_vectors",
+            "normal_vectors",
+            "uv_vectors",
+            "texture_list",
+            "face_indices",
+            "normal_indices",
+            "uv_indices",
+        ];
+        let mut lists: [Option<(Vec<Listed>, Span)>; 7] = Default::default();
+        let mut data = MeshData::default();
+        loop {
+            let kw = match c.peek() {
+                Some(Tok::Block(k, _, _)) if LISTS.contains(k) => *k,
+                Some(Tok::Kw("inside_vector", _)) => {
+                    c.next();
+                    data.inside_vector = Some(self.inside_vector(c)?);
+                    continue;
+                }
+                _ => break,
+            };
+            let k = LISTS.iter().position(|l| *l == kw).unwrap_or(0);
+            let Some(l) = self.take_list(c, kw) else {
+                c.next(); // an erroneous list, already reported
+                continue;
+            };
+            if lists[k].is_some() {
+                return Err(Diagnostic::error(
+                    codes::DUPLICATE_PARAMETER,
+                    l.1,
+                    format!("`{kw}` is given twice in this `mesh2`"),
+                )
+                .into());
+            }
+            lists[k] = Some(l);
+        }
+        let need = |k: usize, lists: &[Option<(Vec<Listed>, Span)>; 7]| -> R<()> {
+            if lists[k].is_none() {
+                return Err(Diagnostic::error(
+                    codes::MISSING_VALUE,
+                    c.span.head(),
+                    format!("`mesh2` needs `{} {{ … }}`", LISTS[k]),
+                )
+                .with_help("a mesh2 needs at least vertex_vectors and face_indices")
+                .into());
+            }
+            Ok(())
+        };
+        need(0, &lists)?;
+        need(4, &lists)?;
+        let vec3s = |ev: &mut Self, k: usize| -> R<Vec<[f32; 3]>> {
+            let Some((l, s)) = &lists[k] else {
+                return Ok(Vec::new());
+            };
+            ev.counted(LISTS[k], l, *s, false)?
+                .iter()
+                .map(|(v, s)| ev.to_vec3(v, *s).map(f32x3))
+                .collect()
+        };
+        data.positions = vec3s(self, 0)?;
+        // Normals are unit length before interpolation, as in POV-Ray.
+        data.normals = vec3s(self, 1)?
+            .into_iter()
+            .map(|n| {
+                let v = glam::Vec3::from(n).normalize_or_zero();
+                [v.x, v.y, v.z]
+            })
+            .collect();
+        if let Some((l, s)) = &lists[2] {
+            for (v, s) in self.counted(LISTS[2], l, *s, false)? {
+                match v {
+                    Value::Vector(x) if x.len == 2 => data.uvs.push([x.c[0] as f32, x.c[1] as f32]),
+                    other => return Err(self.mismatch("a uv vector <u, v>", other, *s)),
+                }
+            }
+        }
+        if let Some((l, s)) = &lists[3] {
+            for (v, s) in self.counted(LISTS[3], l, *s, false)? {
+                match v {
+                    Value::Texture(t) => data.textures.push(t.clone()),
+                    other => return Err(self.mismatch("a texture { … }", other, *s)),
+                }
+            }
+        }
+        // face_indices: <a, b, c> [, t | , t0, t1, t2].
+        let (l, s) = lists[4].as_ref().expect("checked above");
+        let entries = self.counted(LISTS[4], l, *s, false)?;
+        let mut k = 0;
+        while k < entries.len() {
+            let tri = self.indices(&entries[k], data.positions.len(), "vertex_vectors")?;
+            data.triangles.push(tri);
+            k += 1;
+            let mut tex = Vec::new();
+            while let Some((Value::Float(f), s)) = entries.get(k) {
+                if *f < 0.0 || f.fract() != 0.0 || *f as usize >= data.textures.len() {
+                    return Err(out_of_range(*s, *f, data.textures.len(), "texture_list"));
+                }
+                tex.push(*f as u32);
+                k += 1;
+            }
+            if !tex.is_empty() {
+                data.texture_indices
+                    .resize(data.triangles.len() - 1, [u32::MAX; 3]);
+                data.texture_indices
+                    .push([tex[0], tex[tex.len().min(2) - 1], tex[tex.len() - 1]]);
+            }
+        }
+        if !data.texture_indices.is_empty() {
+            data.texture_indices
+                .resize(data.triangles.len(), [u32::MAX; 3]);
+        }
+        // normal_indices / uv_indices default to face_indices, as in POV-Ray.
+        for (k, count, target) in [(5, data.normals.len(), 0usize), (6, data.uvs.len(), 1usize)] {
+            if count == 0 {
+                continue;
+            }
+            let idx = match &lists[k] {
+                Some((l, s)) => {
+                    let e = self.counted(LISTS[k], l, *s, false)?;
+                    if e.len() != data.triangles.len() {
+                        return Err(Diagnostic::error(
+                            codes::INVALID_SIZE,
+                            *s,
+                            format!(
+                                "`{}` lists {} faces but face_indices lists {}",
+                                LISTS[k],
+                                e.len(),
+                                data.triangles.len()
+                            ),
+                        )
+                        .into());
+                    }
+                    let name = if target == 0 {
+                        "normal_vectors"
+                    } else {
+                        "uv_vectors"
+                    };
+                    e.iter()
+                        .map(|x| self.indices(x, count, name))
+                        .collect::<R<Vec<_>>>()?
+                }
+                None => {
+                    if let Some(bad) = data
+                        .triangles
+                        .iter()
+                        .flatten()
+                        .find(|&&i| i as usize >= count)
+                    {
+                        let (_, s) = lists[4].as_ref().expect("checked above");
+                        return Err(out_of_range(*s, *bad as f64, count, LISTS[1 + target]));
+                    }
+                    data.triangles.clone()
+                }
+            };
+            if target == 0 {
+                data.normal_indices = idx;
+            } else {
+                data.uv_indices = idx;
+            }
+        }
+        if data.triangles.is_empty() {
+            return Err(
+                Diagnostic::error(codes::MISSING_VALUE, c.span, "this mesh2 has no faces").into(),
+            );
+        }
+        Ok(Object::new(Shape::Mesh(Arc::new(data)), c.span))
+    }
+
+    fn indices(&self, (v, s): &Listed, count: usize, of: &str) -> R<[u32; 3]> {
+        let Value::Vector(x) = v else {
+            return Err(self.mismatch("a face <a, b, c> of vertex indices", v, *s));
+        };
+        if x.len != 3 {
+            return Err(self.mismatch("a face <a, b, c> of three indices", v, *s));
+        }
+        let mut out = [0u32; 3];
+        for (o, &i) in out.iter_mut().zip(x.as_slice()) {
+            if i < 0.0 || i.fract() != 0.0 || i as usize >= count {
+                return Err(out_of_range(*s, i, count, of));
+            }
+            *o = i as u32;
+        }
+        Ok(out)
+    }
+}
+
+fn out_of_range(s: Span, i: f64, count: usize, of: &str) -> super::Fail {
+    Diagnostic::error(
+        codes::INDEX_OUT_OF_RANGE,
+        s,
+        format!("index {i} is out of range: `{of}` has {count} entries"),
+    )
+    .with_help("indices count from 0")
+    .into()
+}

@@ -1,0 +1,370 @@
+//! The shapes beyond the first release: `cylinder`, `cone`, `torus`, `disc`,
+//! `smooth_triangle`, `polygon`, `polyhedron`, and the list blocks that hold
+//! their data (`vertex_vectors { … }` and friends).
+
+use super::cursor::{Cursor, Tok};
+use super::value::{Array, Value};
+use super::{Evaluator, Fail, R};
+use crate::build::shapes::solid;
+use crate::diag::{codes, Diagnostic};
+use crate::scene::{Object, Shape};
+use crate::span::Span;
+use glam::DVec3;
+use std::rc::Rc;
+
+/// One evaluated element of a list block, with where it was written.
+pub(crate) type Listed = (Value, Span);
+
+impl Evaluator<'_> {
+    /// A list block (`vertex_vectors`, `face_indices`, `texture_list`, `clipped_by`, …):
+    /// its values and blocks in order, commas dropped, as a one-dimensional array.
+    pub(crate) fn list_block(&mut self, c: &mut Cursor) -> R<Value> {
+        let mut elems = Vec::new();
+        while let Some(t) = c.next() {
+            match t {
+                Tok::Comma(_) => {}
+                Tok::Val(v, _) | Tok::Block(_, v, _) => elems.push(Some(v)),
+                other => {
+                    let valid: &[&str] = match c.block {
+                        "clipped_by" | "bounded_by" => &["an object"],
+                        "texture_list" => &["texture"],
+                        _ => &["a count, then values separated by commas"],
+                    };
+                    self.report(self.unexpected(c, &other, valid));
+                }
+            }
+        }
+        Ok(Value::Array(Rc::new(Array {
+            dims: vec![elems.len()],
+            elems,
+        })))
+    }
+
+    /// Takes the list block `kw` if it is next: its elements (with the block's span,
+    /// as list elements keep no spans of their own) and the block's span.
+    pub(crate) fn take_list(&mut self, c: &mut Cursor, kw: &str) -> Option<(Vec<Listed>, Span)> {
+        match c.peek() {
+            Some(Tok::Block(k, Value::Array(_), _)) if *k == kw => {}
+            _ => return None,
+        }
+        let Some(Tok::Block(_, Value::Array(a), span)) = c.next() else {
+            return None;
+        };
+        Some((
+            a.elems
+                .iter()
+                .map(|e| (e.clone().unwrap_or(Value::Poison), span))
+                .collect(),
+            span,
+        ))
+    }
+
+    /// Splits POV-Ray's leading count off a list and checks it: `vertex_vectors {
+    /// 3, A, B, C }` → `[A, B, C]`. Entries are the non-float elements (floats after
+    /// a face are its texture indices). With `optional`, a list without a count is
+    /// accepted (for `polyhedron`).
+    pub(crate) fn counted<'a>(
+        &mut self,
+        kw: &str,
+        list: &'a [Listed],
+        span: Span,
+        optional: bool,
+    ) -> R<&'a [Listed]> {
+        let Some((Value::Float(n), _)) = list.first() else {
+            if optional || list.is_empty() {
+                return Ok(list);
+            }
+            return Err(Diagnostic::error(
+                codes::MISSING_VALUE,
+                span,
+                format!("`{kw}` must start with how many entries follow"),
+            )
+            .with_help(format!("write `{kw} {{ COUNT, … }}`"))
+            .into());
+        };
+        let rest = &list[1..];
+        let given = rest
+            .iter()
+            .filter(|(v, _)| !matches!(v, Value::Float(_)))
+            .count();
+        if *n < 0.0 || n.fract() != 0.0 || *n as usize != given {
+            return Err(Diagnostic::error(
+                codes::INVALID_SIZE,
+                span,
+                format!("`{kw}` says {n} entries but lists {given}"),
+            )
+            .with_label("count does not match")
+            .with_help(format!("make the count {given}, or list {n} entries"))
+            .into());
+        }
+        Ok(rest)
+    }
+
+    /// The shapes of this file; `None` when `c.block` is not one of them.
+    pub(crate) fn new_shape(&mut self, c: &mut Cursor) -> R<Option<Object>> {
+        let span = c.span;
+        let shape = match c.block {
+            "cylinder" => {
+                let base = self.take_vec3(c, "the cylinder's base point")?;
+                c.comma();
+                let cap = self.take_vec3(c, "the cylinder's cap point")?;
+                c.comma();
+                let (v, s) = c.value("the cylinder's radius")?;
+                let radius = self.to_float(&v, s)?;
+                if radius <= 0.0 {
+                    return Err(self.bad_size(s, "cylinder radius", radius));
+                }
+                self.check_ends(base, cap, s)?;
+                Shape::Cylinder {
+                    base,
+                    cap,
+                    radius,
+                    open: false,
+                }
+            }
+            "cone" => {
+                let base = self.take_vec3(c, "the cone's base point")?;
+                c.comma();
+                let (v, s0) = c.value("the cone's base radius")?;
+                let base_radius = self.to_float(&v, s0)?;
+                c.comma();
+                let cap = self.take_vec3(c, "the cone's cap point")?;
+                c.comma();
+                let (v, s1) = c.value("the cone's cap radius")?;
+                let cap_radius = self.to_float(&v, s1)?;
+                for (r, s) in [(base_radius, s0), (cap_radius, s1)] {
+                    if r < 0.0 {
+                        return Err(Diagnostic::error(
+                            codes::INVALID_SIZE,
+                            s,
+                            format!("a cone radius cannot be negative, found {r}"),
+                        )
+                        .with_help("give a radius of 0 (a point) or more")
+                        .into());
+                    }
+                }
+                if base_radius == 0.0 && cap_radius == 0.0 {
+                    return Err(self.bad_size(s1, "cone radius at one end", 0.0));
+                }
+                self.check_ends(base, cap, s1)?;
+                Shape::Cone {
+                    base,
+                    base_radius,
+                    cap,
+                    cap_radius,
+                    open: false,
+                }
+            }
+            "torus" => {
+                let (v, s0) = c.value("the torus's major radius")?;
+                let major = self.to_float(&v, s0)?;
+                c.comma();
+                let (v, s1) = c.value("the torus's minor radius")?;
+                let minor = self.to_float(&v, s1)?;
+                if major <= 0.0 {
+                    return Err(self.bad_size(s0, "major radius", major));
+                }
+                if minor <= 0.0 {
+                    return Err(self.bad_size(s1, "minor radius", minor));
+                }
+                Shape::Torus { major, minor }
+            }
+            "disc" => {
+                let center = self.take_vec3(c, "the disc's centre")?;
+                c.comma();
+                let (v, s) = c.value("the disc's normal")?;
+                let normal = self.to_vec3(&v, s)?;
+                if normal.length_squared() == 0.0 {
+                    return Err(Diagnostic::error(
+                        codes::INVALID_SIZE,
+                        s,
+                        "the disc's normal is <0, 0, 0>",
+                    )
+                    .with_help("give the direction the disc faces, e.g. `y`")
+                    .into());
+                }
+                c.comma();
+                let (v, s) = c.value("the disc's radius")?;
+                let radius = self.to_float(&v, s)?;
+                if radius <= 0.0 {
+                    return Err(self.bad_size(s, "disc radius", radius));
+                }
+                let mut hole = 0.0;
+                if matches!(c.peek(), Some(Tok::Comma(_))) {
+                    c.comma();
+                    let (v, s) = c.value("the disc's hole radius")?;
+                    hole = self.to_float(&v, s)?;
+                    if hole < 0.0 || hole >= radius {
+                        return Err(Diagnostic::error(
+                            codes::INVALID_SIZE,
+                            s,
+                            format!(
+                                "the hole radius {hole} must be between 0 and the radius {radius}"
+                            ),
+                        )
+                        .with_help("make the hole smaller than the disc")
+                        .into());
+                    }
+                }
+                Shape::Disc {
+                    center,
+                    normal: normal.normalize(),
+                    radius,
+                    hole,
+                }
+            }
+            "smooth_triangle" => {
+                let mut v = [DVec3::ZERO; 6];
+                const WHAT: [&str; 6] = [
+                    "the first corner",
+                    "the first corner's normal",
+                    "the second corner",
+                    "the second corner's normal",
+                    "the third corner",
+                    "the third corner's normal",
+                ];
+                for (k, slot) in v.iter_mut().enumerate() {
+                    if k > 0 {
+                        c.comma();
+                    }
+                    *slot = self.take_vec3(c, WHAT[k])?;
+                }
+                Shape::SmoothTriangle {
+                    vertices: [v[0], v[2], v[4]],
+                    normals: [v[1], v[3], v[5]],
+                }
+            }
+            "polygon" => {
+                let (v, s) = c.value("the number of points")?;
+                let n = self.to_float(&v, s)?;
+                if n < 3.0 || n.fract() != 0.0 {
+                    return Err(Diagnostic::error(
+                        codes::INVALID_SIZE,
+                        s,
+                        format!("a polygon needs a whole number of at least 3 points, found {n}"),
+                    )
+                    .into());
+                }
+                let mut points = Vec::with_capacity(n as usize);
+                for _ in 0..n as usize {
+                    c.comma();
+                    points.push(self.take_vec3(c, "a polygon point")?);
+                }
+                Shape::Polygon { points }
+            }
+            "polyhedron" => self.polyhedron(c)?,
+            _ => return Ok(None),
+        };
+        Ok(Some(Object::new(shape, span)))
+    }
+
+    fn check_ends(&self, a: DVec3, b: DVec3, s: Span) -> R<()> {
+        if a == b {
+            return Err(Diagnostic::error(
+                codes::INVALID_SIZE,
+                s,
+                "the two end points are the same: the shape has no length",
+            )
+            .with_help("give different base and cap points")
+            .into());
+        }
+        Ok(())
+    }
+
+    /// `polyhedron { vertex_vectors { [N,] V… } face_indices { [N,] <I, J, K…>… } }`.
+    fn polyhedron(&mut self, c: &mut Cursor) -> R<Shape> {
+        let head = c.span.head();
+        let missing = |what: &str, ex: &str| -> Fail {
+            Diagnostic::error(
+                codes::MISSING_VALUE,
+                head,
+                format!("`polyhedron` needs `{what}`"),
+            )
+            .with_help(format!("write e.g. `polyhedron {{ {ex} }}`"))
+            .into()
+        };
+        let (vl, vspan) = self.take_list(c, "vertex_vectors").ok_or_else(|| {
+            missing(
+                "vertex_vectors { … }",
+                "vertex_vectors { <0,0,0>, <1,0,0>, <0,1,0>, <0,0,1> } face_indices { … }",
+            )
+        })?;
+        let (fl, fspan) = self.take_list(c, "face_indices").ok_or_else(|| {
+            missing(
+                "face_indices { … } after vertex_vectors",
+                "vertex_vectors { … } face_indices { <0,1,2>, <0,1,3>, <0,2,3>, <1,2,3> }",
+            )
+        })?;
+        let vl = self.counted("vertex_vectors", &vl, vspan, true)?;
+        let mut verts = Vec::with_capacity(vl.len());
+        for (v, s) in vl {
+            verts.push(self.to_vec3(v, *s)?);
+        }
+        let fl = self.counted("face_indices", &fl, fspan, true)?;
+        let mut faces = Vec::with_capacity(fl.len());
+        for (v, s) in fl {
+            let Value::Vector(x) = v else {
+                return Err(self.mismatch("a face: a vector of 3 to 5 vertex indices", v, *s));
+            };
+            let mut f = Vec::new();
+            for &i in x.as_slice() {
+                if i < 0.0 || i.fract() != 0.0 || i as usize >= verts.len() {
+                    return Err(Diagnostic::error(
+                        codes::INDEX_OUT_OF_RANGE,
+                        *s,
+                        format!(
+                            "face index {i} does not name one of the {} vertices",
+                            verts.len()
+                        ),
+                    )
+                    .with_help("vertex indices count from 0")
+                    .into());
+                }
+                f.push(i as usize);
+            }
+            if f.len() < 3 {
+                return Err(self.mismatch("a face of at least 3 vertex indices", v, *s));
+            }
+            faces.push(f);
+        }
+        if faces.len() < 4 {
+            return Err(Diagnostic::error(
+                codes::INVALID_SIZE,
+                fspan,
+                format!("a polyhedron needs at least 4 faces, found {}", faces.len()),
+            )
+            .into());
+        }
+        if let Some(edge) = open_edge(&faces) {
+            return Err(Diagnostic::error(
+                codes::INVALID_SIZE,
+                fspan,
+                format!(
+                    "the faces do not close: the edge from vertex {} to {} belongs to one face only",
+                    edge.0, edge.1
+                ),
+            )
+            .with_help("list every face of the solid (each edge is shared by two faces)")
+            .into());
+        }
+        let planes = solid::planes(&verts, &faces).map_err(|m| {
+            Fail::from(
+                Diagnostic::error(codes::INVALID_SIZE, fspan, m)
+                    .with_help("a polyhedron must be convex, with flat faces"),
+            )
+        })?;
+        Ok(Shape::Polyhedron { planes })
+    }
+}
+
+/// An edge used by only one face, if any (faces of a closed solid share edges).
+fn open_edge(faces: &[Vec<usize>]) -> Option<(usize, usize)> {
+    let mut count: std::collections::BTreeMap<(usize, usize), u32> = Default::default();
+    for f in faces {
+        for k in 0..f.len() {
+            let (a, b) = (f[k], f[(k + 1) % f.len()]);
+            *count.entry((a.min(b), a.max(b))).or_default() += 1;
+        }
+    }
+    count.into_iter().find(|&(_, n)| n < 2).map(|(e, _)| e)
+}
