@@ -31,6 +31,7 @@ pub(crate) const MODIFIERS: &[&str] = &[
     "poly_wave",
     "brick_size",
     "mortar",
+    "agate_turb",
 ];
 
 /// A pattern being read: kind, modifiers and map.
@@ -233,6 +234,7 @@ impl Evaluator<'_> {
                 spec.mods.octaves = n.clamp(1.0, 10.0) as u32;
             }
             "omega" => spec.mods.omega = self.take_float(c, "omega")?,
+            "agate_turb" => spec.mods.agate_turb = self.take_float(c, "agate_turb")?,
             "lambda" => spec.mods.lambda = self.take_float(c, "lambda")?,
             "frequency" => spec.mods.frequency = self.take_float(c, "the frequency")?,
             "phase" => spec.mods.phase = self.take_float(c, "the phase")?,

@@ -206,6 +206,8 @@ pub struct PatternMods {
     pub phase: f64,
     /// `noise_generator` in force (1, 2 or 3; default 2).
     pub noise_generator: u8,
+    /// `agate_turb`: how turbulent `agate` is (default 1).
+    pub agate_turb: f64,
 }
 
 impl Default for PatternMods {
@@ -219,6 +221,7 @@ impl Default for PatternMods {
             frequency: 1.0,
             phase: 0.0,
             noise_generator: 2,
+            agate_turb: 1.0,
         }
     }
 }

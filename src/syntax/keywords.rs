@@ -5,6 +5,7 @@ pub const KEYWORDS: &[&str] = &[
     "adaptive",
     "adc_bailout",
     "agate",
+    "agate_turb",
     "all",
     "ambient",
     "ambient_light",

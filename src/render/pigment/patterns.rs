@@ -88,7 +88,7 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
         }
         PatternKind::Agate => {
             let t = turbulence(p, 7, 0.5, 2.0);
-            let v = 0.5 + 0.5 * (TAU * (p.z + 3.8 * t)).sin();
+            let v = 0.5 + 0.5 * (TAU * (p.z + 3.8 * m.agate_turb * t)).sin();
             v.powf(0.77)
         }
         PatternKind::Wrinkles => {
