@@ -269,6 +269,21 @@ impl Evaluator<'_> {
                     compose_pattern(&mut pig, &t);
                     Ok(())
                 }
+                // `pigment { Gold filter 0.9 }`: POV-Ray lets a colour written as a
+                // name take `filter`/`transmit` after it, as after `color NAME`.
+                Tok::Kw(kw @ ("filter" | "transmit"), _)
+                    if pattern_given && matches!(pig.pattern, Pattern::Solid(_)) && !modified =>
+                {
+                    self.take_float(c, "the amount").map(|x| {
+                        if let Pattern::Solid(col) = &mut pig.pattern {
+                            if kw == "filter" {
+                                col.filter = x;
+                            } else {
+                                col.transmit = x;
+                            }
+                        }
+                    })
+                }
                 Tok::Kw("quick_color" | "quick_colour", _) => {
                     self.take_colour(c, "a colour").map(|_| ())
                 }
