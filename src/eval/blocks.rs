@@ -70,6 +70,8 @@ const LATER_BLOCKS: &[&str] = &[
     "sphere_sweep",
     "bicubic_patch",
     "material",
+    "irid",
+    "warp",
     "normal_map",
     "texture_map",
     "media",

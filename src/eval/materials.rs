@@ -291,6 +291,8 @@ impl Evaluator<'_> {
                     uv_mapping = true;
                     Ok(())
                 }
+                // A block that already reported itself (`warp { }`) says nothing more.
+                Tok::Block(_, Value::Poison, _) => Err(Fail::silent()),
                 Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_PATTERNS.contains(&kw) => {
                     Err(Diagnostic::error(
                         codes::UNSUPPORTED,
@@ -740,6 +742,7 @@ impl Evaluator<'_> {
                 c.once("reflection", span)?;
                 f.reflection = r;
             }
+            Tok::Block(_, Value::Poison, _) => return Err(Fail::silent()),
             Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_FINISH.contains(&kw) => {
                 return Err(Diagnostic::error(
                     codes::UNSUPPORTED,
