@@ -368,6 +368,9 @@ impl Builder {
                 Some(p) => PrimShape::Polygon(Arc::new(p)),
                 None => empty(),
             },
+            Shape::Quadric { coefficients } => {
+                PrimShape::Quadric(shapes::surface::Quadric(*coefficients))
+            }
             Shape::Polyhedron { planes } => PrimShape::Polyhedron(planes.clone().into()),
             Shape::Mesh(m) => PrimShape::Mesh(self.mesh(m)),
             Shape::Union { .. } | Shape::Csg { .. } => empty(),

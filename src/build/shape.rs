@@ -4,6 +4,7 @@ use super::csg::Csg;
 use super::mesh::MeshAccel;
 use super::shapes::flat::{self, Polygon};
 use super::shapes::quadric::Frustum;
+use super::shapes::surface::Quadric;
 use super::shapes::{solid, torus};
 use super::{Aabb, Ray};
 use crate::scene::{Interior, ObjectFlags, Texture, Transform};
@@ -69,6 +70,8 @@ pub enum PrimShape {
         /// Tube radius.
         minor: f64,
     },
+    /// A `quadric` surface (unbounded).
+    Quadric(Quadric),
     /// A disc (annulus).
     Disc {
         /// Centre.
@@ -218,6 +221,7 @@ impl PrimShape {
                     None
                 }
             }
+            PrimShape::Quadric(q) => q.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
             PrimShape::Mesh(m) => m.intersect(ray, t_min, t_max).map(|(t, i)| (t, 0, i)),
             PrimShape::Csg(c) => c.intersect(ray, t_min, t_max),
             PrimShape::Frustum(_) | PrimShape::Torus { .. } => {
@@ -264,6 +268,7 @@ impl PrimShape {
                 torus::hits(*major, *minor, ray, t_min, t_max, &mut |t| f(t, 0))
             }
             PrimShape::Mesh(m) => m.hits(ray, t_min, t_max, f),
+            PrimShape::Quadric(q) => q.hits(ray, t_min, t_max, &mut |t| f(t, 0)),
             _ => {
                 if let Some((t, _, sub)) = self.intersect(ray, t_min, t_max) {
                     f(t, sub)
@@ -283,6 +288,7 @@ impl PrimShape {
             PrimShape::Frustum(f) => f.normal(p, sub),
             PrimShape::Torus { major, .. } => torus::normal(*major, p),
             PrimShape::Disc { normal, .. } => *normal,
+            PrimShape::Quadric(q) => q.normal(p),
             PrimShape::Polygon(pg) => pg.normal,
             PrimShape::Polyhedron(planes) => planes.get(sub as usize).map_or(DVec3::Y, |pl| pl.0),
             PrimShape::Mesh(m) => m.normal(sub),
@@ -332,6 +338,7 @@ impl PrimShape {
             PrimShape::Frustum(f) => f.inside(p),
             PrimShape::Torus { major, minor } => torus::inside(*major, *minor, p),
             PrimShape::Polyhedron(planes) => solid::inside(planes, p),
+            PrimShape::Quadric(q) => q.inside(p),
             PrimShape::Mesh(m) => m.inside(p),
             PrimShape::Csg(c) => c.inside(p),
             PrimShape::Triangle { .. }
@@ -344,7 +351,7 @@ impl PrimShape {
     /// Bounds in this shape's space; `None` when unbounded.
     pub fn local_bounds(&self) -> Option<Aabb> {
         Some(match self {
-            PrimShape::Plane { .. } => return None,
+            PrimShape::Plane { .. } | PrimShape::Quadric(_) => return None,
             PrimShape::Sphere { center, radius } => Aabb::new(
                 *center - DVec3::splat(*radius),
                 *center + DVec3::splat(*radius),

@@ -18,6 +18,7 @@ const BLOCKS: &[&str] = &[
     "cone",
     "height_field",
     "torus",
+    "quadric",
     "disc",
     "smooth_triangle",
     "polygon",
@@ -68,8 +69,9 @@ const LATER_BLOCKS: &[&str] = &[
     "text",
     "sphere_sweep",
     "bicubic_patch",
-    "quadric",
     "material",
+    "irid",
+    "warp",
     "normal_map",
     "texture_map",
     "media",
@@ -114,8 +116,8 @@ impl Evaluator<'_> {
         let mut c = Cursor::new(toks.toks, kw, b.span);
         Ok(Some(match kw {
             "sphere" | "plane" | "box" | "triangle" | "union" | "object" | "cylinder" | "cone"
-            | "torus" | "disc" | "height_field" | "smooth_triangle" | "polygon" | "mesh"
-            | "mesh2" | "polyhedron" | "merge" | "intersection" | "difference" => {
+            | "torus" | "quadric" | "disc" | "height_field" | "smooth_triangle" | "polygon"
+            | "mesh" | "mesh2" | "polyhedron" | "merge" | "intersection" | "difference" => {
                 Value::Object(std::sync::Arc::new(self.object(&mut c)?))
             }
             "clipped_by" | "bounded_by" | "vertex_vectors" | "normal_vectors" | "uv_vectors"

@@ -269,6 +269,21 @@ impl Evaluator<'_> {
                     compose_pattern(&mut pig, &t);
                     Ok(())
                 }
+                // `pigment { Gold filter 0.9 }`: POV-Ray lets a colour written as a
+                // name take `filter`/`transmit` after it, as after `color NAME`.
+                Tok::Kw(kw @ ("filter" | "transmit"), _)
+                    if pattern_given && matches!(pig.pattern, Pattern::Solid(_)) && !modified =>
+                {
+                    self.take_float(c, "the amount").map(|x| {
+                        if let Pattern::Solid(col) = &mut pig.pattern {
+                            if kw == "filter" {
+                                col.filter = x;
+                            } else {
+                                col.transmit = x;
+                            }
+                        }
+                    })
+                }
                 Tok::Kw("quick_color" | "quick_colour", _) => {
                     self.take_colour(c, "a colour").map(|_| ())
                 }
@@ -276,6 +291,8 @@ impl Evaluator<'_> {
                     uv_mapping = true;
                     Ok(())
                 }
+                // A block that already reported itself (`warp { }`) says nothing more.
+                Tok::Block(_, Value::Poison, _) => Err(Fail::silent()),
                 Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_PATTERNS.contains(&kw) => {
                     Err(Diagnostic::error(
                         codes::UNSUPPORTED,
@@ -725,6 +742,7 @@ impl Evaluator<'_> {
                 c.once("reflection", span)?;
                 f.reflection = r;
             }
+            Tok::Block(_, Value::Poison, _) => return Err(Fail::silent()),
             Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_FINISH.contains(&kw) => {
                 return Err(Diagnostic::error(
                     codes::UNSUPPORTED,

@@ -155,6 +155,21 @@ impl Evaluator<'_> {
                     open: false,
                 }
             }
+            "quadric" => {
+                let mut k = [0.0; 10];
+                let what = [
+                    "<A, B, C>: the x², y², z² coefficients",
+                    "<D, E, F>: the xy, xz, yz coefficients",
+                    "<G, H, I>: the x, y, z coefficients",
+                ];
+                for (n, w) in what.iter().enumerate() {
+                    let v = self.take_vec3(c, w)?;
+                    k[3 * n..3 * n + 3].copy_from_slice(&v.to_array());
+                    c.comma();
+                }
+                k[9] = self.take_float(c, "J: the constant term")?;
+                Shape::Quadric { coefficients: k }
+            }
             "torus" => {
                 let (v, s0) = c.value("the torus's major radius")?;
                 let major = self.to_float(&v, s0)?;

@@ -166,6 +166,22 @@ fn shade(
                     d,
                     n.dot(inc.dir),
                 );
+            } else if s.flags.double_illuminate {
+                // `double_illuminate`: a light behind the surface (as seen from
+                // the viewer) lights it too, as if the normal were turned to it;
+                // the shadow ray then leaves from the back.
+                if let Some(inc) = lights::incident(world, light, p, -geo_n, -n, ctx) {
+                    layer += direct(
+                        f,
+                        colour,
+                        opacity,
+                        inc.colour,
+                        -n,
+                        inc.dir,
+                        d,
+                        -n.dot(inc.dir),
+                    );
+                }
             }
         }
         let r = &f.reflection;

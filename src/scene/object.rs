@@ -126,6 +126,13 @@ pub enum Shape {
         /// Radius of the tube.
         minor: f64,
     },
+    /// `quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }`: the surface
+    /// `A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J = 0`, inside
+    /// where the left side is negative; unbounded.
+    Quadric {
+        /// The coefficients `A … J`.
+        coefficients: [f64; 10],
+    },
     /// `disc { CENTER, NORMAL, RADIUS [, HOLE_RADIUS] }` (not a solid).
     Disc {
         /// Centre.

@@ -4,4 +4,5 @@
 pub mod flat;
 pub mod quadric;
 pub mod solid;
+pub mod surface;
 pub mod torus;
