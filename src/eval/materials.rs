@@ -166,15 +166,17 @@ impl Evaluator<'_> {
         };
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
-                Tok::Block(_, Value::Pigment(p), _) => {
+                // POV-Ray also takes a declared pigment, finish or normal written
+                // bare inside a texture: `texture { Jade }`.
+                Tok::Block(_, Value::Pigment(p), _) | Tok::Val(Value::Pigment(p), _) => {
                     tex.pigment = (*p).clone();
                     Ok(())
                 }
-                Tok::Block(_, Value::Finish(f), _) => {
+                Tok::Block(_, Value::Finish(f), _) | Tok::Val(Value::Finish(f), _) => {
                     tex.finish = *f;
                     Ok(())
                 }
-                Tok::Block(_, Value::Normal(n), _) => {
+                Tok::Block(_, Value::Normal(n), _) | Tok::Val(Value::Normal(n), _) => {
                     tex.normal = Some((*n).clone());
                     Ok(())
                 }
