@@ -6,6 +6,9 @@
 //! Measured (2026-11, a 2-core machine under load ≈ 5): one build 0.50 s wall /
 //! 0.52 CPU s; primary rays 1.9 Mrays/s wall, 1.87 Mrays per CPU second; peak
 //! memory 104 MB for the whole process (mesh 18 MB, BVH 22 MB).
+//! After the plain-comparison slab test (2026-11-21, load ≈ 4 on 2 cores, so
+//! wall ≈ CPU): build 0.50 s / 0.55 CPU s (unchanged); primary rays
+//! 2.0 Mrays/s, 1.98 Mrays per CPU second (was 1.87); peak 103 MB.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use glam::DVec3;

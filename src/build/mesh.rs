@@ -28,7 +28,7 @@ impl MeshAccel {
         self.bvh.bounds()
     }
 
-    #[inline]
+    #[inline(always)]
     fn tri_hit(&self, i: u32, ray: &Ray) -> Option<f64> {
         let [a, b, c] = self.data.corners(i as usize);
         triangle(a, b - a, c - a, ray).map(|h| h.0)
