@@ -8,64 +8,9 @@ use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
 use crate::scene::{MeshData, Object, Shape};
 use crate::span::Span;
-use std::path::PathBuf;
 use std::sync::Arc;
 
 impl Evaluator<'_> {
-    /// The path of data file `name` (written at `span`): searched in the scene's
-    /// folder, then the `-I` folders; it must be inside the read sandbox.
-    pub(crate) fn data_file(&mut self, name: &str, span: Span) -> R<PathBuf> {
-        let mut dirs: Vec<PathBuf> = Vec::new();
-        if let Some(here) = self.include_stack.last().copied() {
-            if let Some(d) = self.sources.get(here).dir() {
-                dirs.push(d.to_path_buf());
-            }
-        }
-        if let Some(d) = &self.scene_dir {
-            if !dirs.contains(d) {
-                dirs.push(d.clone());
-            }
-        }
-        dirs.extend(self.options.access.include_dirs.iter().cloned());
-        if std::path::Path::new(name).is_absolute() {
-            dirs = vec![PathBuf::new()];
-        }
-        let mut tried = Vec::new();
-        for dir in &dirs {
-            let path = dir.join(name);
-            let shown = path.display().to_string();
-            tried.push(shown.strip_prefix("./").unwrap_or(&shown).to_string());
-            if !path.is_file() {
-                continue;
-            }
-            let canon = path.canonicalize().unwrap_or(path.clone());
-            if !self
-                .options
-                .access
-                .permits(&canon, self.scene_dir.as_deref())
-            {
-                return Err(Diagnostic::error(
-                    codes::FILE_NOT_ALLOWED,
-                    span,
-                    format!("`{}` is outside the folders this scene may read", canon.display()),
-                )
-                .with_label("outside the scene's folders")
-                .with_help("scenes read only from their own folder and -I folders; allow more with --allow-path DIR")
-                .into());
-            }
-            return Ok(canon);
-        }
-        Err(Diagnostic::error(
-            codes::FILE_NOT_FOUND,
-            span,
-            format!("file `{name}` not found"),
-        )
-        .with_label("no such file")
-        .with_note(format!("tried: {}", tried.join(", ")))
-        .with_help("check the file name, or add its folder with -I DIR")
-        .into())
-    }
-
     /// The file name string after `obj_file`, `ply_file` or `png`.
     fn file_name(&mut self, c: &mut Cursor, what: &str) -> R<(String, Span)> {
         let (v, s) = c.value(what)?;
@@ -80,7 +25,7 @@ impl Evaluator<'_> {
     /// ignored).
     pub(crate) fn obj_mesh(&mut self, c: &mut Cursor) -> R<MeshData> {
         let (name, span) = self.file_name(c, "the OBJ file's name")?;
-        let path = self.data_file(&name, span)?;
+        let path = self.data_file(&name, span, "OBJ file")?;
         let bad = |e: String| -> super::Fail {
             Diagnostic::error(
                 codes::FILE_NOT_FOUND,
@@ -154,7 +99,7 @@ impl Evaluator<'_> {
         use ply_rs_bw::parser::Parser;
         use ply_rs_bw::ply::DefaultElement;
         let (name, span) = self.file_name(c, "the PLY file's name")?;
-        let path = self.data_file(&name, span)?;
+        let path = self.data_file(&name, span, "PLY file")?;
         let bad = |e: String| -> super::Fail {
             Diagnostic::error(
                 codes::FILE_NOT_FOUND,
@@ -231,7 +176,7 @@ impl Evaluator<'_> {
             }
         }
         let (name, fspan) = self.file_name(c, "the PNG file's name")?;
-        let path = self.data_file(&name, fspan)?;
+        let path = self.data_file(&name, fspan, "height map")?;
         let img = image::ImageReader::open(&path)
             .map_err(|e| e.to_string())
             .and_then(|r| r.with_guessed_format().map_err(|e| e.to_string()))

@@ -113,12 +113,15 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    /// Finds and loads an include file.
-    fn resolve(&mut self, name: &str, span: Span) -> R<FileId> {
+    /// The folders a file named in the scene is searched in: the including file's
+    /// folder, the scene's folder (POV-Ray resolves relative to the scene), then the
+    /// -I folders. An absolute name is used as it is.
+    fn search_dirs(&self, name: &str) -> Vec<PathBuf> {
+        if Path::new(name).is_absolute() {
+            return vec![PathBuf::new()];
+        }
         let here = self.include_stack.last().copied().unwrap_or(FileId(0));
         let mut dirs: Vec<PathBuf> = Vec::new();
-        // The including file's folder, then the scene's folder (POV-Ray resolves
-        // relative to the scene), then the -I folders.
         if let Some(d) = self.sources.get(here).dir() {
             dirs.push(d.to_path_buf());
         }
@@ -128,11 +131,24 @@ impl Evaluator<'_> {
             }
         }
         dirs.extend(self.options.access.include_dirs.iter().cloned());
-        let mut tried = Vec::new();
-        for dir in &dirs {
+        dirs
+    }
+
+    /// Searches the folders of [`Self::search_dirs`] for `name` (written at `span`):
+    /// `Ok(Some((canonical path, path as shown)))` when found inside the read
+    /// sandbox, `Ok(None)` with the paths tried in `tried` when not found, and a
+    /// `rts::io::file_not_allowed` error when found outside the sandbox.
+    fn search(
+        &self,
+        name: &str,
+        span: Span,
+        tried: &mut Vec<String>,
+    ) -> R<Option<(PathBuf, String)>> {
+        for dir in &self.search_dirs(name) {
             let path = dir.join(name);
             let shown = path.display().to_string();
-            tried.push(shown.strip_prefix("./").unwrap_or(&shown).to_string());
+            let shown = shown.strip_prefix("./").unwrap_or(&shown).to_string();
+            tried.push(shown.clone());
             if !path.is_file() {
                 continue;
             }
@@ -151,22 +167,48 @@ impl Evaluator<'_> {
                 .with_help("scenes read only from their own folder, -I folders and the built-in library; allow more with --allow-path DIR")
                 .into());
             }
+            return Ok(Some((canon, shown)));
+        }
+        Ok(None)
+    }
+
+    /// The path of a data file (mesh, image, height map) called `name`, written at
+    /// `span`; `what` names it in the error ("image", "mesh file", …).
+    pub(crate) fn data_file(&self, name: &str, span: Span, what: &str) -> R<PathBuf> {
+        let mut tried = Vec::new();
+        match self.search(name, span, &mut tried)? {
+            Some((canon, _)) => Ok(canon),
+            None => Err(Diagnostic::error(
+                codes::FILE_NOT_FOUND,
+                span,
+                format!("{what} `{name}` not found"),
+            )
+            .with_label("no such file")
+            .with_note(format!("tried: {}", tried.join(", ")))
+            .with_help("check the file name, or add its folder with -I DIR")
+            .into()),
+        }
+    }
+
+    /// Finds and loads an include file.
+    fn resolve(&mut self, name: &str, span: Span) -> R<FileId> {
+        let mut tried = Vec::new();
+        if let Some((canon, shown)) = self.search(name, span, &mut tried)? {
             if let Some(id) = self.sources.find_path(&canon) {
                 return Ok(id);
             }
-            let shown = path.display().to_string();
-            let shown = shown.strip_prefix("./").unwrap_or(&shown).to_string();
-            return match load_file(self.sources, &canon, shown) {
+            return match load_file(self.sources, &canon, shown.clone()) {
                 Ok(id) => Ok(id),
                 Err(LoadError::Utf8(d)) => Err((*d).into()),
                 Err(LoadError::Io(e)) => Err(Diagnostic::error(
                     codes::FILE_NOT_FOUND,
                     span,
-                    format!("cannot read `{}`: {e}", path.display()),
+                    format!("cannot read `{shown}`: {e}"),
                 )
                 .into()),
             };
         }
+        let dirs = self.search_dirs(name);
         if let Some((lib, text)) = STDLIB.iter().find(|(n, _)| *n == name) {
             let path = PathBuf::from(format!("<stdlib>/{lib}"));
             if let Some(id) = self.sources.find_path(&path) {

@@ -552,7 +552,7 @@ impl Evaluator<'_> {
             )
             .into());
         };
-        let path = self.resolve_image(&name, span)?;
+        let path = self.data_file(&name, span, "image")?;
         let img = image::open(&path).map_err(|e| {
             Fail::from(
                 Diagnostic::error(
@@ -583,54 +583,6 @@ impl Evaluator<'_> {
             pattern: Pattern::Image(Arc::new(im)),
             transform: None,
         })
-    }
-
-    /// The path of image file `name`: next to the including file, the scene, or
-    /// in a `-I` folder, within the folders the scene may read.
-    fn resolve_image(&self, name: &str, span: crate::span::Span) -> R<std::path::PathBuf> {
-        let here = self.include_stack.last().copied();
-        let mut dirs: Vec<std::path::PathBuf> = Vec::new();
-        if let Some(d) = here.and_then(|h| self.sources.get(h).dir()) {
-            dirs.push(d.to_path_buf());
-        }
-        if let Some(d) = &self.scene_dir {
-            dirs.push(d.clone());
-        }
-        dirs.extend(self.options.access.include_dirs.iter().cloned());
-        if dirs.is_empty() {
-            dirs.push(std::path::PathBuf::from("."));
-        }
-        for dir in &dirs {
-            let path = dir.join(name);
-            if !path.is_file() {
-                continue;
-            }
-            let canon = path.canonicalize().unwrap_or(path.clone());
-            if !self
-                .options
-                .access
-                .permits(&canon, self.scene_dir.as_deref())
-            {
-                return Err(Diagnostic::error(
-                    codes::FILE_NOT_ALLOWED,
-                    span,
-                    format!(
-                        "`{}` is outside the folders this scene may read",
-                        canon.display()
-                    ),
-                )
-                .with_help("allow more with --allow-path DIR")
-                .into());
-            }
-            return Ok(canon);
-        }
-        Err(Diagnostic::error(
-            codes::FILE_NOT_FOUND,
-            span,
-            format!("cannot find image `{name}`"),
-        )
-        .with_help("image files are looked up next to the scene and in -I folders")
-        .into())
     }
 
     fn second_pattern(&self, span: crate::span::Span) -> Fail {
