@@ -273,9 +273,18 @@ impl Evaluator<'_> {
 
     /// "unknown identifier" with a suggestion among the names in scope and built-ins.
     pub(crate) fn unknown_identifier(&self, name: Sym, span: Span) -> Diagnostic {
+        let text = name.name();
+        if POV_KEYWORDS_NOT_YET.contains(&&*text) {
+            return Diagnostic::error(
+                codes::UNSUPPORTED,
+                span,
+                format!("`{text}` is a POV-Ray 3.7 keyword rts does not implement yet"),
+            )
+            .with_label("not implemented yet")
+            .with_help("see docs/language.md for what this release supports");
+        }
         let names: Vec<std::sync::Arc<str>> =
             self.scope.names().into_iter().map(Sym::name).collect();
-        let text = name.name();
         // Keywords are lowercase: suggest them only for lowercase words.
         let keywords: &[&str] = if text.chars().any(char::is_uppercase) {
             &[]
@@ -695,3 +704,32 @@ fn srgb_to_linear(c: f64) -> f64 {
         ((c + 0.055) / 1.055).powf(2.4)
     }
 }
+
+/// POV-Ray 3.7 keywords (patterns, objects, camera types, modifiers) that rts does not
+/// implement yet and does not reserve: met where a name is expected, they are
+/// reported as unsupported rather than as unknown identifiers.
+const POV_KEYWORDS_NOT_YET: &[&str] = &[
+    "average",
+    "boxed",
+    "cells",
+    "crackle",
+    "cubic",
+    "cylindrical",
+    "density_file",
+    "facets",
+    "image_pattern",
+    "julia",
+    "mandel",
+    "omnimax",
+    "pavement",
+    "pigment_pattern",
+    "planar",
+    "poly",
+    "quilted",
+    "slope",
+    "spiral1",
+    "spiral2",
+    "square",
+    "tiling",
+    "triangular",
+];
