@@ -482,7 +482,12 @@ impl World {
             p,
             geo_normal,
             normal,
-            uv: shape.uv(local, hit.sub),
+            // uv costs trigonometry per hit: only for textures that look it up.
+            uv: if texture.uses_uv() {
+                shape.uv(local, hit.sub)
+            } else {
+                None
+            },
             texture,
             texture_from_world,
             interior,

@@ -173,7 +173,7 @@ impl Evaluator<'_> {
                     } else {
                         let mut obj = (*o).clone();
                         let t = Transform::translate(location);
-                        place(&mut obj, &t);
+                        super::objects::apply_transform(&mut obj, &t);
                         light.looks_like = Some(Arc::new(obj));
                         Ok(())
                     }
@@ -279,7 +279,7 @@ impl Evaluator<'_> {
         }
         if let Some(obj) = &mut light.looks_like {
             let o = Arc::make_mut(obj);
-            place(o, &transform);
+            super::objects::apply_transform(o, &transform);
             o.flags.no_shadow = true;
         }
         Ok(light)
@@ -348,14 +348,4 @@ fn transform_light(light: &mut Light, t: &Transform) {
         a.axis1 = t.vector(a.axis1);
         a.axis2 = t.vector(a.axis2);
     }
-}
-
-/// Applies `t` after an object's own transform.
-fn place(obj: &mut crate::scene::Object, t: &Transform) {
-    let current = obj
-        .transform
-        .as_deref()
-        .copied()
-        .unwrap_or(Transform::IDENTITY);
-    obj.transform = Some(Arc::new(current.then(t)));
 }

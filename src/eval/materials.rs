@@ -23,41 +23,18 @@ const TEXTURE_ITEMS: &[&str] = &[
     "matrix",
     "transform",
 ];
-const PIGMENT_ITEMS: &[&str] = &[
-    "color",
-    "rgb",
-    "color_map",
-    "colour_map",
-    "pigment_map",
-    "image_map",
-    "checker",
-    "hexagon",
-    "brick",
-    "gradient",
-    "radial",
-    "onion",
-    "leopard",
-    "spotted",
-    "bozo",
-    "marble",
-    "wood",
-    "granite",
-    "agate",
-    "wrinkles",
-    "ripples",
-    "waves",
-    "turbulence",
-    "octaves",
-    "omega",
-    "lambda",
-    "frequency",
-    "phase",
-    "translate",
-    "rotate",
-    "scale",
-    "matrix",
-    "transform",
-];
+/// What a `pigment { }` accepts (for "did you mean" and help lists).
+fn pigment_items() -> Vec<&'static str> {
+    let head = [
+        "color",
+        "rgb",
+        "color_map",
+        "colour_map",
+        "pigment_map",
+        "image_map",
+    ];
+    [&head[..], PATTERNS, MODIFIERS, TRANSFORMS].concat()
+}
 const FINISH_ITEMS: &[&str] = &[
     "ambient",
     "diffuse",
@@ -73,38 +50,10 @@ const FINISH_ITEMS: &[&str] = &[
     "crand",
 ];
 const REFLECTION_ITEMS: &[&str] = &["fresnel", "falloff", "metallic"];
-const NORMAL_ITEMS: &[&str] = &[
-    "bumps",
-    "dents",
-    "ripples",
-    "waves",
-    "wrinkles",
-    "bump_size",
-    "gradient",
-    "checker",
-    "hexagon",
-    "brick",
-    "onion",
-    "leopard",
-    "granite",
-    "agate",
-    "marble",
-    "wood",
-    "radial",
-    "spotted",
-    "bozo",
-    "turbulence",
-    "octaves",
-    "omega",
-    "lambda",
-    "frequency",
-    "phase",
-    "translate",
-    "rotate",
-    "scale",
-    "matrix",
-    "transform",
-];
+/// What a `normal { }` accepts.
+fn normal_items() -> Vec<&'static str> {
+    [PATTERNS, &["bump_size"], MODIFIERS, TRANSFORMS].concat()
+}
 const INTERIOR_ITEMS: &[&str] = &[
     "ior",
     "fade_distance",
@@ -312,7 +261,7 @@ impl Evaluator<'_> {
                 )
                 .with_help("a pigment has one colour or pattern; use `checker A, B` for two")
                 .into()),
-                other => Err(self.unexpected(c, &other, PIGMENT_ITEMS)),
+                other => Err(self.unexpected(c, &other, &pigment_items())),
             };
             if let Err(f) = r {
                 self.report(f);
@@ -412,7 +361,7 @@ impl Evaluator<'_> {
                 }
                 Tok::Block(_, Value::ColourMap(_) | Value::PigmentMap(_), _) => Ok(()),
                 Tok::Val(Value::Poison, _) => Err(Fail::silent()),
-                other => Err(self.unexpected(c, &other, NORMAL_ITEMS)),
+                other => Err(self.unexpected(c, &other, &normal_items())),
             };
             if let Err(f) = r {
                 self.report(f);

@@ -450,7 +450,7 @@ fn value_of(t: &Tok) -> Value {
 
 /// Applies a transform to an object (its texture moves with it: textures are kept in
 /// the object's own frame).
-fn apply_transform(obj: &mut Object, t: &Transform) {
+pub(crate) fn apply_transform(obj: &mut Object, t: &Transform) {
     let current = obj
         .transform
         .as_deref()

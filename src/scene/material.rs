@@ -49,6 +49,13 @@ pub struct Texture {
 }
 
 impl Texture {
+    /// Whether any pigment of this texture or the layers under it looks its colour
+    /// up by the surface's uv coordinates (`image_map { … uv_mapping }`), so the
+    /// renderer need not compute uv for other surfaces.
+    pub fn uses_uv(&self) -> bool {
+        self.pigment.uses_uv() || self.under.as_ref().is_some_and(|t| t.uses_uv())
+    }
+
     /// Appends `t` to the transforms of every pattern of the texture (pigment and
     /// normal), as `translate`/`rotate`/`scale` written after them do.
     pub fn transform_patterns(&mut self, t: &Transform) {
@@ -78,6 +85,22 @@ pub struct Pigment {
     /// `pattern_from_object`… stored as `object_from_pattern`: the transforms written
     /// inside the pigment (and those applied to the texture/object after it).
     pub transform: Option<Arc<Transform>>,
+}
+
+impl Pigment {
+    /// Whether this pigment (or one nested in it) uses `uv_mapping`.
+    pub fn uses_uv(&self) -> bool {
+        match &self.pattern {
+            Pattern::Solid(_) => false,
+            Pattern::Checker(pair) => pair.iter().any(Pigment::uses_uv),
+            Pattern::Image(im) => im.uv_mapping,
+            Pattern::Mapped(m) => match &m.map {
+                PatternMap::Colours(_) => false,
+                PatternMap::Pigments(entries) => entries.iter().any(|(_, p)| p.uses_uv()),
+                PatternMap::List(list) => list.iter().any(Pigment::uses_uv),
+            },
+        }
+    }
 }
 
 impl Default for Pigment {
