@@ -322,7 +322,7 @@ impl Evaluator<'_> {
 
     /// `normal { PATTERN [AMOUNT] [bump_size AMOUNT] modifiers transforms | Name }`.
     pub(crate) fn normal(&mut self, c: &mut Cursor) -> R<Normal> {
-        let mut n = match c.peek() {
+        let n = match c.peek() {
             Some(Tok::Val(Value::Normal(_), _)) => match c.next() {
                 Some(Tok::Val(Value::Normal(x), _)) => Some((*x).clone()),
                 _ => unreachable!(),
@@ -369,13 +369,12 @@ impl Evaluator<'_> {
         }
         let kind = spec.kind.unwrap_or(PatternKind::Bumps);
         let mods = spec.final_mods();
-        n = Some(Normal {
+        Ok(Normal {
             kind,
             mods,
             bump_size: if spec.kind.is_none() { 0.0 } else { bump },
             transform,
-        });
-        Ok(n.expect("set"))
+        })
     }
 
     /// `interior { [Name] ior fade_distance fade_power fade_color caustics dispersion }`.
