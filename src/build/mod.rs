@@ -545,6 +545,36 @@ impl World {
         found
     }
 
+    /// [`World::occluded`] that first tests primitive `hint` (any index; ones out
+    /// of range are skipped) and leaves in `hint` the primitive that blocked the
+    /// ray. The answer does not depend on `hint`, only the time it takes.
+    pub fn occluded_hinted(&self, ray: &Ray, t_min: f64, t_max: f64, hint: &mut u32) -> bool {
+        let kind = RayKind::Shadow;
+        let hit_by = |i: u32| {
+            let p = &self.primitives[i as usize];
+            kind.sees(&p.flags) && p.intersect(ray, t_min, t_max).is_some()
+        };
+        if (*hint as usize) < self.primitives.len() && hit_by(*hint) {
+            return true;
+        }
+        if let Some(&i) = self.unbounded.iter().find(|&&i| hit_by(i)) {
+            *hint = i;
+            return true;
+        }
+        let mut found = None;
+        self.bvh.traverse(ray, t_min, t_max, |i, t_max| {
+            if hit_by(i) {
+                found = Some(i);
+                return None;
+            }
+            Some(t_max)
+        });
+        if let Some(i) = found {
+            *hint = i;
+        }
+        found.is_some()
+    }
+
     /// Whether world point `p` is inside any object, by POV-Ray's rules (see
     /// [`Primitive::inside`]): what refraction uses to decide which medium a ray
     /// is in. Cost: one bounds test per bounded primitive plus the unbounded ones.

@@ -282,8 +282,10 @@ fn transmitted(
 /// `t_min` and `t_max`: 1 when nothing is in the way, 0 behind an opaque surface,
 /// and the product of `filter · colour + transmit` of each transparent surface
 /// crossed otherwise (POV-Ray's filtered shadows; shadow rays do not bend).
-pub fn shadow_filter(world: &World, ray: &Ray, t_min: f64, t_max: f64) -> DVec3 {
-    if !world.occluded(ray, t_min, t_max) {
+/// `hint` is a primitive to test first, updated to the blocker found (see
+/// [`World::occluded_hinted`]).
+pub fn shadow_filter(world: &World, ray: &Ray, t_min: f64, t_max: f64, hint: &mut u32) -> DVec3 {
+    if !world.occluded_hinted(ray, t_min, t_max, hint) {
         return DVec3::ONE;
     }
     let mut through = DVec3::ONE;
