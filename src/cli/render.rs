@@ -1,6 +1,6 @@
 //! `rts render SCENE [-o OUT] [options]`: see docs/cli.md for every option.
 
-use super::{common, stats, SceneArgs, EXIT_ERRORS, EXIT_OK, EXIT_USAGE};
+use super::{common, sequence, stats, SceneArgs, EXIT_ERRORS, EXIT_OK, EXIT_USAGE};
 use rts::output::{BitDepth, Format, Gamma, OutputOptions};
 use rts::render::{Antialias, Crop, Pass, Progress, RenderOptions, Sampling, Settings};
 use std::path::PathBuf;
@@ -70,9 +70,48 @@ pub struct RenderArgs {
     /// Seed of every random number (jitter, sample positions).
     #[arg(long, value_name = "N", default_value_t = 0)]
     pub seed: u64,
-    /// Animation frame number (keys the random numbers with the seed).
-    #[arg(long, value_name = "N", default_value_t = 0)]
-    pub frame: u32,
+    /// Render frame N of the timeline as a still (its clock, frame_number and
+    /// random numbers); a `#` run in -o becomes the frame number.
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    pub frame: Option<i64>,
+    /// Frames to render, `A..B` (both included): a part of the scene's
+    /// `animation { }` timeline, or the timeline itself (clock 0 to 1) when the
+    /// scene has none.
+    #[arg(long, value_name = "A..B")]
+    pub frames: Option<String>,
+    /// Frames per second (overrides the scene's `animation { fps }`; default 24).
+    #[arg(long, value_name = "F")]
+    pub fps: Option<f64>,
+    /// Cyclic animation (POV-Ray's +KC): the last frame stops one step before the
+    /// first comes round again.
+    #[arg(long)]
+    pub cyclic: bool,
+    /// Re-render every frame of a sequence, even those already complete.
+    #[arg(long)]
+    pub force: bool,
+    /// Render only part I of N of a sequence (I from 1 to N; frames dealt out in
+    /// turn), so N machines together render every frame once.
+    #[arg(long, value_name = "I/N")]
+    pub shard: Option<String>,
+    /// After a sequence, assemble its frames into an animated GIF.
+    #[arg(long, value_name = "OUT.gif")]
+    pub gif: Option<PathBuf>,
+    /// After a sequence, assemble its frames into an animated PNG.
+    #[arg(long, value_name = "OUT.png")]
+    pub apng: Option<PathBuf>,
+    /// After a sequence, assemble its frames into an MP4 with ffmpeg (when installed).
+    #[arg(long, value_name = "OUT.mp4")]
+    pub mp4: Option<PathBuf>,
+    /// Quick look: half the width and height, one ray per pixel, no motion blur.
+    #[arg(long)]
+    pub preview: bool,
+    /// Motion blur: keep the shutter open for this fraction of a frame (0 to 1),
+    /// averaging the scene at several instants (overrides `animation { motion_blur }`).
+    #[arg(long, value_name = "SHUTTER")]
+    pub motion_blur: Option<f64>,
+    /// Instants averaged for motion blur (default 8).
+    #[arg(long, value_name = "N")]
+    pub motion_samples: Option<u32>,
     /// Render only the pixels X0..X1 × Y0..Y1 (0-based, ends excluded, top-left
     /// origin); the output image has the region's size.
     #[arg(long, value_name = "X0,Y0,X1,Y1")]
@@ -186,7 +225,7 @@ fn settings(args: &RenderArgs) -> Result<Settings, String> {
         crop,
         pass,
         seed: args.seed,
-        frame: args.frame,
+        frame: 0,
     })
 }
 
@@ -214,7 +253,167 @@ fn output_target(args: &RenderArgs) -> Result<(PathBuf, Format), String> {
     }
 }
 
-/// Renders the scene.
+/// One rendered image and what it took.
+pub(crate) struct Image {
+    /// The picture.
+    pub film: rts::render::Film,
+    /// Counters (of the last instant when several are averaged).
+    pub stats: rts::render::RenderStats,
+    /// Evaluating the scene.
+    pub t_eval: std::time::Duration,
+    /// Building the world.
+    pub t_build: std::time::Duration,
+    /// Tracing.
+    pub t_render: std::time::Duration,
+    /// `assumed_gamma` of the scene.
+    pub assumed_gamma: Option<f64>,
+    /// Top-level objects.
+    pub objects: usize,
+    /// Light sources.
+    pub lights: usize,
+}
+
+/// What every image of a run shares: settings, threads and the mesh hierarchies
+/// kept from frame to frame.
+pub(crate) struct Renderer<'a> {
+    /// The command line.
+    pub args: &'a RenderArgs,
+    /// Sampling, crop, pass, seed.
+    pub settings: Settings,
+    /// Image size (after --preview).
+    pub width: u32,
+    /// Image height.
+    pub height: u32,
+    pool: Option<rayon::ThreadPool>,
+    build_cache: rts::build::BuildCache,
+    /// Whether to draw the per-image progress bar.
+    pub show_progress: bool,
+    /// Whether an evaluation's diagnostics were shown (later ones show only errors).
+    printed: bool,
+}
+
+impl Renderer<'_> {
+    /// Worker threads.
+    pub fn threads(&self) -> usize {
+        self.pool
+            .as_ref()
+            .map_or_else(rayon::current_num_threads, |p| p.current_num_threads())
+    }
+
+    /// Evaluates the scene at every instant (reusing `first` for the first when
+    /// given), builds and renders each, and averages the pictures. `Err` is the
+    /// exit status after the diagnostics were printed.
+    pub fn image(
+        &mut self,
+        parsed: &mut common::Parsed,
+        instants: &[rts::eval::EvalOptions],
+        mut first: Option<rts::scene::Scene>,
+        frame: u32,
+    ) -> Result<Image, i32> {
+        let mut out: Option<Image> = None;
+        let n = instants.len().max(1);
+        for options in instants {
+            let t0 = Instant::now();
+            let scene = match first.take() {
+                Some(s) => s,
+                None => {
+                    let (scene, diags) = parsed.eval(options);
+                    let failed = rts::diag::has_errors(&diags) || scene.is_none();
+                    if failed || !self.printed {
+                        common::print(&diags, &parsed.sources, self.args.scene.message_format);
+                        self.printed = true;
+                    }
+                    if failed {
+                        return Err(EXIT_ERRORS);
+                    }
+                    scene.ok_or(EXIT_ERRORS)?
+                }
+            };
+            let t_eval = t0.elapsed();
+            let settings = Settings {
+                frame,
+                ..self.settings
+            };
+            let (width, height, show) = (self.width, self.height, self.show_progress);
+            let cache = &mut self.build_cache;
+            let mut job = || {
+                let t1 = Instant::now();
+                let world = rts::build::build_cached(&scene, cache);
+                let t_build = t1.elapsed();
+                let t2 = Instant::now();
+                let progress = Progress::default();
+                let done = std::sync::atomic::AtomicBool::new(false);
+                let rendered = std::thread::scope(|s| {
+                    if show {
+                        s.spawn(|| stats::progress_bar(&progress, &done));
+                    }
+                    let r = rts::render::render_with(
+                        &world,
+                        &RenderOptions { width, height },
+                        &settings,
+                        Some(&progress),
+                    );
+                    done.store(true, std::sync::atomic::Ordering::Relaxed);
+                    r
+                });
+                (rendered, t_build, t2.elapsed(), world.global.assumed_gamma)
+            };
+            let (rendered, t_build, t_render, assumed_gamma) = match &self.pool {
+                Some(pool) => pool.install(job),
+                None => job(),
+            };
+            match &mut out {
+                None => {
+                    out = Some(Image {
+                        film: rendered.film,
+                        stats: rendered.stats,
+                        t_eval,
+                        t_build,
+                        t_render,
+                        assumed_gamma,
+                        objects: scene.objects.len(),
+                        lights: scene.lights.len(),
+                    })
+                }
+                Some(img) => {
+                    for (a, b) in img.film.pixels.iter_mut().zip(&rendered.film.pixels) {
+                        *a += *b;
+                    }
+                    img.stats = rendered.stats;
+                    img.t_eval += t_eval;
+                    img.t_build += t_build;
+                    img.t_render += t_render;
+                }
+            }
+        }
+        let mut img = out.ok_or(EXIT_ERRORS)?;
+        if n > 1 {
+            let k = 1.0 / n as f64;
+            img.film.pixels.iter_mut().for_each(|p| *p *= k);
+        }
+        Ok(img)
+    }
+
+    /// File encoding options for this run.
+    pub fn output_options(&self, assumed_gamma: Option<f64>) -> OutputOptions {
+        let data = self.settings.pass.is_data();
+        OutputOptions {
+            gamma: if data {
+                Gamma::Power(1.0)
+            } else {
+                self.args.gamma
+            },
+            bit_depth: if self.args.bit_depth == 16 {
+                BitDepth::Sixteen
+            } else {
+                BitDepth::Eight
+            },
+            assumed_gamma: if data { None } else { assumed_gamma },
+        }
+    }
+}
+
+/// Renders the scene: a still, or the frames of its timeline.
 pub fn run(args: &RenderArgs) -> i32 {
     let t_start = Instant::now();
     if args.width == 0
@@ -232,109 +431,138 @@ pub fn run(args: &RenderArgs) -> i32 {
     if args.bit_depth != 8 && args.bit_depth != 16 {
         return usage("--bit-depth must be 8 or 16");
     }
-    let (output, format) = match output_target(args) {
-        Ok(t) => t,
-        Err(e) => return usage(e),
+    if args.preview && args.crop.is_some() {
+        return usage("--preview and --crop cannot be used together");
+    }
+    let (width, height) = if args.preview {
+        ((args.width / 2).max(1), (args.height / 2).max(1))
+    } else {
+        (args.width, args.height)
     };
-    let settings = match settings(args) {
+    let mut settings = match settings(args) {
         Ok(s) => s,
         Err(e) => return usage(e),
     };
-    let options = match common::eval_options(&args.scene, args.width, args.height) {
+    if args.preview {
+        settings.sampling = Sampling::Centre;
+    }
+    let base = match common::eval_options(&args.scene, width, height) {
         Ok(o) => o,
         Err(e) => return usage(e),
     };
+    let plan = match sequence::Plan::from_args(args) {
+        Ok(p) => p,
+        Err(e) => return usage(e),
+    };
     let t0 = Instant::now();
-    let loaded = match common::load(&args.scene_file, &options) {
-        Ok(l) => l,
+    let mut parsed = match common::parse(&args.scene_file) {
+        Ok(p) => p,
         Err(e) => {
             eprintln!("error: {e}");
             return EXIT_ERRORS;
         }
     };
     common::print(
-        &loaded.diagnostics,
-        &loaded.sources,
+        &parsed.diagnostics,
+        &parsed.sources,
         args.scene.message_format,
     );
-    let Some(scene) = loaded.scene else {
+    if parsed.file.is_none() || rts::diag::has_errors(&parsed.diagnostics) {
+        return EXIT_ERRORS;
+    }
+    // The first evaluation finds the scene's own timeline.
+    let (probe, diags) = parsed.eval(&base);
+    let timeline = probe
+        .as_ref()
+        .and_then(|p| plan.timeline(p.animation.clone()));
+    // With a timeline the scene is evaluated again for its frames, whose
+    // diagnostics are shown instead (unless this evaluation already failed).
+    let quiet_probe = timeline.is_some() && probe.is_some();
+    if !quiet_probe {
+        common::print(&diags, &parsed.sources, args.scene.message_format);
+    }
+    let Some(probe) = probe else {
         return EXIT_ERRORS;
     };
-    let t_parse = t0.elapsed();
-    let progress = Progress::default();
-    let show_progress = !args.quiet && stats::stderr_is_terminal();
-    let job = || {
-        let t1 = Instant::now();
-        let world = rts::build::build(&scene);
-        let t_build = t1.elapsed();
-        let t2 = Instant::now();
-        let done = std::sync::atomic::AtomicBool::new(false);
-        let rendered = std::thread::scope(|s| {
-            if show_progress {
-                s.spawn(|| stats::progress_bar(&progress, &done));
-            }
-            let r = rts::render::render_with(
-                &world,
-                &RenderOptions {
-                    width: args.width,
-                    height: args.height,
-                },
-                &settings,
-                Some(&progress),
-            );
-            done.store(true, std::sync::atomic::Ordering::Relaxed);
-            r
-        });
-        (
-            rendered,
-            t_build,
-            t2.elapsed(),
-            world.global.assumed_gamma,
-            rayon::current_num_threads(),
-        )
-    };
-    let (rendered, t_build, t_render, assumed_gamma, threads) = match args.threads {
+    let t_probe = t0.elapsed();
+    let pool = match args.threads {
         Some(n) => match rayon::ThreadPoolBuilder::new()
             .num_threads(n.max(1))
             .build()
         {
-            Ok(pool) => pool.install(job),
+            Ok(pool) => Some(pool),
             Err(e) => {
                 eprintln!("error: cannot start {n} threads: {e}");
                 return EXIT_ERRORS;
             }
         },
-        None => job(),
+        None => None,
     };
-    let data = settings.pass.is_data();
-    let out = OutputOptions {
-        gamma: if data { Gamma::Power(1.0) } else { args.gamma },
-        bit_depth: if args.bit_depth == 16 {
-            BitDepth::Sixteen
-        } else {
-            BitDepth::Eight
-        },
-        assumed_gamma: if data { None } else { assumed_gamma },
+    let mut r = Renderer {
+        args,
+        settings,
+        width,
+        height,
+        pool,
+        build_cache: rts::build::BuildCache::default(),
+        show_progress: !args.quiet && stats::stderr_is_terminal(),
+        printed: false,
     };
+    let still = args.scene.clock.is_some() || args.frame.is_some() || timeline.is_none();
+    if !still {
+        if let Some(tl) = timeline {
+            return sequence::run(&mut r, &mut parsed, &base, &plan, tl, t_start);
+        }
+    }
+    // A still: at --clock, at --frame's time, or the scene as first evaluated.
+    let (instants, first, frame_no) = match (&timeline, args.frame) {
+        (Some(tl), Some(n)) => (
+            sequence::instants(&base, tl, n, plan.blur(tl), args.preview),
+            None,
+            n,
+        ),
+        (Some(tl), None) => {
+            let mut o = sequence::frame_options(&base, tl, 0);
+            o.clock = base.clock;
+            o.clock_on = base.clock_on;
+            o.frame_number = 0.0;
+            (vec![o], None, 0)
+        }
+        (None, n) => (vec![base.clone()], Some(probe), n.unwrap_or(0)),
+    };
+    let (output, format) = match output_target(args) {
+        Ok((p, f)) => (sequence::frame_path(&p, frame_no), f),
+        Err(e) => return usage(e),
+    };
+    let t_parse = t_probe;
+    let img = match r.image(&mut parsed, &instants, first, frame_no as u32) {
+        Ok(i) => i,
+        Err(code) => return code,
+    };
+    let out = r.output_options(img.assumed_gamma);
     let t3 = Instant::now();
-    if let Err(e) = rts::output::write_as(&rendered.film, &output, format, &out) {
+    if let Err(e) = rts::output::write_as(&img.film, &output, format, &out) {
         eprintln!("error: {e}");
         return EXIT_ERRORS;
     }
+    let settings = Settings {
+        frame: frame_no as u32,
+        ..r.settings
+    };
     let report = stats::Report {
         output: &output,
         format,
-        width: args.width,
-        height: args.height,
+        width,
+        height,
         settings: &settings,
-        threads,
-        objects: scene.objects.len(),
-        lights: scene.lights.len(),
-        stats: rendered.stats,
+        threads: r.threads(),
+        objects: img.objects,
+        lights: img.lights,
+        stats: img.stats,
         times: stats::Times {
-            parse_eval: t_parse,
-            build: t_build,
-            render: t_render,
+            parse_eval: t_parse + img.t_eval,
+            build: img.t_build,
+            render: img.t_render,
             write: t3.elapsed(),
             total: t_start.elapsed(),
         },

@@ -55,6 +55,9 @@ const BLOCKS: &[&str] = &[
     "sky_sphere",
     "fog",
     "looks_like",
+    "spline",
+    "keyframes",
+    "animation",
 ];
 
 /// POV-Ray blocks that a later release implements.
@@ -77,7 +80,6 @@ const LATER_BLOCKS: &[&str] = &[
     "media",
     "photons",
     "radiosity",
-    "spline",
     "light_group",
 ];
 
@@ -139,6 +141,12 @@ impl Evaluator<'_> {
             "light_source" => Value::Light(std::sync::Arc::new(self.light(&mut c)?)),
             "transform" => Value::Transform(std::sync::Arc::new(self.transform_block(&mut c)?)),
             "looks_like" => Value::Object(std::sync::Arc::new(self.looks_like(&mut c)?)),
+            "spline" => self.spline_block(&mut c)?,
+            "keyframes" => self.keyframes_block(&mut c)?,
+            "animation" => {
+                self.animation_block(&mut c)?;
+                return Ok(None);
+            }
             "sky_sphere" => {
                 self.sky_sphere(&mut c)?;
                 return Ok(None);

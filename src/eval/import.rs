@@ -26,6 +26,9 @@ impl Evaluator<'_> {
     pub(crate) fn obj_mesh(&mut self, c: &mut Cursor) -> R<MeshData> {
         let (name, span) = self.file_name(c, "the OBJ file's name")?;
         let path = self.data_file(&name, span, "OBJ file")?;
+        if let Some(m) = self.mesh_cache.file(&path) {
+            return Ok(m);
+        }
         let bad = |e: String| -> super::Fail {
             Diagnostic::error(
                 codes::FILE_NOT_FOUND,
@@ -89,6 +92,7 @@ impl Evaluator<'_> {
         if m.triangles.is_empty() {
             return Err(bad("the file has no faces".into()));
         }
+        self.mesh_cache.store_file(&path, &m);
         Ok(m)
     }
 
@@ -100,6 +104,9 @@ impl Evaluator<'_> {
         use ply_rs_bw::ply::DefaultElement;
         let (name, span) = self.file_name(c, "the PLY file's name")?;
         let path = self.data_file(&name, span, "PLY file")?;
+        if let Some(m) = self.mesh_cache.file(&path) {
+            return Ok(m);
+        }
         let bad = |e: String| -> super::Fail {
             Diagnostic::error(
                 codes::FILE_NOT_FOUND,
@@ -154,6 +161,7 @@ impl Evaluator<'_> {
         if m.triangles.is_empty() {
             return Err(bad("the file has no faces".into()));
         }
+        self.mesh_cache.store_file(&path, &m);
         Ok(m)
     }
 

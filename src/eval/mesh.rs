@@ -92,7 +92,10 @@ impl Evaluator<'_> {
                         c.next();
                         data.inside_vector = Some(self.inside_vector(c)?);
                     }
-                    return Ok(Object::new(Shape::Mesh(Arc::new(data)), c.span));
+                    return Ok(Object::new(
+                        Shape::Mesh(self.mesh_cache.intern(data)),
+                        c.span,
+                    ));
                 }
                 Some(Tok::Block("triangle" | "smooth_triangle", _, _)) => {
                     let Some(Tok::Block(_, v, s)) = c.next() else {
@@ -146,7 +149,10 @@ impl Evaluator<'_> {
             data.texture_indices
                 .resize(data.triangles.len(), [u32::MAX; 3]);
         }
-        Ok(Object::new(Shape::Mesh(Arc::new(data)), c.span))
+        Ok(Object::new(
+            Shape::Mesh(self.mesh_cache.intern(data)),
+            c.span,
+        ))
     }
 
     fn inside_vector(&mut self, c: &mut Cursor) -> R<DVec3> {
@@ -332,7 +338,10 @@ impl Evaluator<'_> {
                 Diagnostic::error(codes::MISSING_VALUE, c.span, "this mesh2 has no faces").into(),
             );
         }
-        Ok(Object::new(Shape::Mesh(Arc::new(data)), c.span))
+        Ok(Object::new(
+            Shape::Mesh(self.mesh_cache.intern(data)),
+            c.span,
+        ))
     }
 
     fn indices(&self, (v, s): &Listed, count: usize, of: &str) -> R<[u32; 3]> {
