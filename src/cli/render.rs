@@ -508,7 +508,21 @@ pub fn run(args: &RenderArgs) -> i32 {
         show_progress: !args.quiet && stats::stderr_is_terminal(),
         printed: false,
     };
-    let still = args.scene.clock.is_some() || args.frame.is_some() || timeline.is_none();
+    // A plain `-o file.png` (no `#` run) asks for one picture: the first frame of
+    // the timeline unless --frame or --clock says which.
+    let plain_output = args
+        .output
+        .as_ref()
+        .is_some_and(|p| !p.to_string_lossy().contains('#'));
+    let wants_sequence = args.frames.is_some()
+        || args.gif.is_some()
+        || args.apng.is_some()
+        || args.mp4.is_some()
+        || args.shard.is_some();
+    let still = args.scene.clock.is_some()
+        || args.frame.is_some()
+        || timeline.is_none()
+        || (plain_output && !wants_sequence);
     if !still {
         if let Some(tl) = timeline {
             return sequence::run(&mut r, &mut parsed, &base, &plan, tl, t_start);
@@ -520,6 +534,11 @@ pub fn run(args: &RenderArgs) -> i32 {
             sequence::instants(&base, tl, n, plan.blur(tl), args.preview),
             None,
             n,
+        ),
+        (Some(tl), None) if args.scene.clock.is_none() => (
+            sequence::instants(&base, tl, tl.initial_frame, plan.blur(tl), args.preview),
+            None,
+            tl.initial_frame,
         ),
         (Some(tl), None) => {
             let mut o = sequence::frame_options(&base, tl, 0);

@@ -58,6 +58,7 @@ const BLOCKS: &[&str] = &[
     "spline",
     "keyframes",
     "animation",
+    "camera_path",
 ];
 
 /// POV-Ray blocks that a later release implements.
@@ -113,6 +114,10 @@ impl Evaluator<'_> {
             };
             return Err(d.into());
         }
+        if kw == "camera_path" {
+            // Its keyframes stay curves: it reads its items itself.
+            return self.camera_path(b).map(Some);
+        }
         let mut toks = Sink::new();
         self.expand(&b.items, &mut toks);
         let mut c = Cursor::new(toks.toks, kw, b.span);
@@ -143,6 +148,7 @@ impl Evaluator<'_> {
             "looks_like" => Value::Object(std::sync::Arc::new(self.looks_like(&mut c)?)),
             "spline" => self.spline_block(&mut c)?,
             "keyframes" => self.keyframes_block(&mut c)?,
+            "camera_path" => unreachable!("read above"),
             "animation" => {
                 self.animation_block(&mut c)?;
                 return Ok(None);

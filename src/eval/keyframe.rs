@@ -124,6 +124,9 @@ pub struct Keyframes {
     pub interp: Interp,
     /// Beyond the ends.
     pub extrapolate: Extrapolate,
+    /// `rotate`: the values are rotations (`rotate <x, y, z>` in degrees), joined
+    /// along the shortest arc (quaternion slerp).
+    pub rotation: bool,
     natural: Option<Spline>,
 }
 
@@ -141,6 +144,7 @@ impl Keyframes {
             keys,
             interp,
             extrapolate,
+            rotation: false,
             natural,
         }
     }
@@ -185,6 +189,15 @@ impl Keyframes {
         let h = b.t - a.t;
         let u = ease(a.ease, (t - a.t) / h);
         let mut out = [0.0; 5];
+        if self.rotation && self.interp != Interp::Step && u > 0.0 {
+            let (q0, mut q1) = (pov_rotation(a.v), pov_rotation(b.v));
+            if q0.dot(q1) < 0.0 {
+                q1 = -q1;
+            }
+            let q = q0.slerp(q1, u);
+            let (z, y, x) = q.to_euler(glam::EulerRot::ZYX);
+            return [x.to_degrees(), y.to_degrees(), z.to_degrees(), 0.0, 0.0];
+        }
         match self.interp {
             Interp::Step => return a.v,
             Interp::Linear => {
@@ -221,9 +234,19 @@ impl Keyframes {
     }
 }
 
+/// POV-Ray's `rotate <x, y, z>` (degrees; about x, then y, then z) as a quaternion.
+fn pov_rotation(v: [f64; 5]) -> glam::DQuat {
+    glam::DQuat::from_euler(
+        glam::EulerRot::ZYX,
+        v[2].to_radians(),
+        v[1].to_radians(),
+        v[0].to_radians(),
+    )
+}
+
 /// The kind of value keyed: what every key must be.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum KeyKind {
+pub(crate) enum KeyKind {
     Float,
     Vector(u8),
     Colour,
@@ -242,6 +265,7 @@ impl KeyKind {
 /// Keywords valid in `keyframes { }`.
 const KEYFRAME_ITEMS: &[&str] = &[
     "key",
+    "rotate",
     "linear_spline",
     "catmull_rom",
     "natural_spline",
@@ -275,8 +299,9 @@ impl Evaluator<'_> {
         })
     }
 
-    fn keyframes(&mut self, c: &mut Cursor) -> R<(Keyframes, KeyKind)> {
+    pub(crate) fn keyframes(&mut self, c: &mut Cursor) -> R<(Keyframes, KeyKind)> {
         let mut interp = Interp::Linear;
+        let mut rotation: Option<Span> = None;
         let mut extrapolate = Extrapolate::Hold;
         let mut units: Option<(&'static str, Span)> = None;
         // Keys as written: time (in the block's units), its span, value, kind.
@@ -326,6 +351,7 @@ impl Evaluator<'_> {
                     })
                 }
                 Tok::Kw("key", span) => self.key(c, span).map(|k| raw.push(k)),
+                Tok::Kw("rotate", span) => c.once("rotate", span).map(|_| rotation = Some(span)),
                 other => Err(self.unexpected(c, &other, KEYFRAME_ITEMS)),
             };
             if let Err(f) = r {
@@ -415,7 +441,23 @@ impl Evaluator<'_> {
             }
             keys.push(key);
         }
-        Ok((Keyframes::new(keys, interp, extrapolate), kind))
+        let mut k = Keyframes::new(keys, interp, extrapolate);
+        if let Some(rs) = rotation {
+            if kind != KeyKind::Vector(3) {
+                return Err(Diagnostic::error(
+                    codes::KEY_MIXED_TYPES,
+                    rs,
+                    format!(
+                        "rotation keys are 3-vectors of degrees, these keys are {}",
+                        kind.name()
+                    ),
+                )
+                .with_help("write keys like `key 0, <0, 90, 0>`")
+                .into());
+            }
+            k.rotation = true;
+        }
+        Ok((k, kind))
     }
 
     /// `key T, VALUE [ease_…] [tangent V]`.
@@ -577,6 +619,28 @@ mod tests {
         let p = keys(Interp::Linear, Extrapolate::PingPong);
         assert!((p.eval(2.5)[0] - p.eval(1.5)[0]).abs() < 1e-12);
         assert!((p.eval(4.25)[0] - p.eval(0.25)[0]).abs() < 1e-12);
+    }
+
+    #[test]
+    fn rotations_take_the_shortest_arc() {
+        let k = |t: f64, y: f64| Key {
+            t,
+            v: [0.0, y, 0.0, 0.0, 0.0],
+            ease: Easing::Linear,
+            tangent: None,
+        };
+        let mut r = Keyframes::new(
+            vec![k(0.0, 0.0), k(1.0, 270.0)],
+            Interp::Linear,
+            Extrapolate::Hold,
+        );
+        r.rotation = true;
+        // 0 to 270 about y is 90 degrees the other way: halfway is -45.
+        let mid = r.eval(0.5);
+        assert!((mid[1] + 45.0).abs() < 1e-9, "{mid:?}");
+        assert!(mid[0].abs() < 1e-9 && mid[2].abs() < 1e-9);
+        let end = r.eval(1.0);
+        assert!((end[1] - 270.0).abs() < 1e-9);
     }
 
     #[test]

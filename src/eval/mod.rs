@@ -9,6 +9,7 @@ mod atmosphere;
 mod blocks;
 mod builtins;
 mod camera;
+mod camera_path;
 mod cursor;
 mod directives;
 mod exprs;

@@ -5,7 +5,8 @@
 //! animation {
 //!   frames 144            // frames 1 … 144   (or `frames 0, 143`: first and last)
 //!   fps 24                // frames per second (default 24)
-//!   duration 6            // instead of `frames`: seconds, frames = duration · fps
+//!   duration 6            // instead of `frames`: seconds; frames = duration · fps + 1
+//!                         // (the first frame at 0 s, the last at 6 s; cyclic: no + 1)
 //!   clock_range 0, 1      // clock at the first and the last frame (default 0, 1)
 //!   cyclic                // POV-Ray's +KC: the last frame stops one step short
 //!   motion_blur 0.5, 8    // shutter open half a frame, 8 instants averaged
@@ -177,8 +178,11 @@ impl Evaluator<'_> {
                 .with_help("`duration` sets the number of frames from the frame rate")
                 .into());
             }
+            // Frames at 0, 1/fps, … D seconds: both ends, unless cyclic (the
+            // frame at D would be the first again).
+            let steps = ((d * t.fps).round() as i64).clamp(1, MAX_FRAMES - 1);
             t.initial_frame = 1;
-            t.final_frame = ((d * t.fps).round() as i64).clamp(1, MAX_FRAMES);
+            t.final_frame = steps + i64::from(!t.cyclic);
         }
         if let Some(prev) = self.scene.animation.as_ref().and_then(|a| a.span) {
             self.warn(
