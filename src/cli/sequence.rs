@@ -283,6 +283,49 @@ fn options_text(
     )
 }
 
+/// Removes the temporary files a killed run left next to the frames (frame and
+/// manifest `.tmp-PID` files whose process is gone).
+fn remove_stale_temporaries(pattern: &Path, frames: &[i64]) {
+    let dir = match pattern.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    let names: std::collections::HashSet<String> = frames
+        .iter()
+        .filter_map(|f| {
+            frame_path(pattern, *f)
+                .file_name()
+                .map(|n| n.to_string_lossy().into_owned())
+        })
+        .chain(
+            pattern
+                .file_name()
+                .map(|n| n.to_string_lossy().into_owned()),
+        )
+        .collect();
+    let Ok(rd) = std::fs::read_dir(&dir) else {
+        return;
+    };
+    for e in rd.flatten() {
+        let name = e.file_name().to_string_lossy().into_owned();
+        let Some((base, pid)) = name.rsplit_once(".tmp-") else {
+            continue;
+        };
+        let Ok(pid) = pid.parse::<u32>() else {
+            continue;
+        };
+        let base = base.trim_start_matches('.');
+        let ours = names.contains(base)
+            || base
+                .strip_suffix(".manifest")
+                .is_some_and(|b| names.iter().any(|n| b.starts_with(n.as_str())));
+        let alive = pid == std::process::id() || Path::new(&format!("/proc/{pid}")).exists();
+        if ours && !alive {
+            let _ = std::fs::remove_file(e.path());
+        }
+    }
+}
+
 /// Renders the frames of `t` (the part `plan` asks for) and assembles them.
 pub fn run(
     r: &mut Renderer,
@@ -325,6 +368,7 @@ pub fn run(
         }
     }
     let all: Vec<i64> = (first..=last).collect();
+    remove_stale_temporaries(&pattern, &all);
     let mine: Vec<i64> = match plan.shard {
         Some((i, n)) => all
             .iter()
