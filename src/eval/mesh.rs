@@ -83,19 +83,20 @@ impl Evaluator<'_> {
                         .with_help("put the file's mesh and the other triangles in separate meshes")
                         .into());
                     }
-                    let mut data = if kw == "obj_file" {
+                    // Read once per file (and kept from frame to frame).
+                    let data = if kw == "obj_file" {
                         self.obj_mesh(c)?
                     } else {
                         self.ply_mesh(c)?
                     };
                     if let Some(Tok::Kw("inside_vector", _)) = c.peek() {
                         c.next();
-                        data.inside_vector = Some(self.inside_vector(c)?);
+                        let mut d = (*data).clone();
+                        d.inside_vector = Some(self.inside_vector(c)?);
+                        let d = self.mesh_cache.intern(d);
+                        return Ok(Object::new(Shape::Mesh(d), c.span));
                     }
-                    return Ok(Object::new(
-                        Shape::Mesh(self.mesh_cache.intern(data)),
-                        c.span,
-                    ));
+                    return Ok(Object::new(Shape::Mesh(data), c.span));
                 }
                 Some(Tok::Block("triangle" | "smooth_triangle", _, _)) => {
                     let Some(Tok::Block(_, v, s)) = c.next() else {

@@ -82,24 +82,26 @@ impl MeshCache {
     }
 
     /// The mesh read earlier from `path`, if the file has not changed since.
-    pub(crate) fn file(&self, path: &Path) -> Option<MeshData> {
+    pub(crate) fn file(&self, path: &Path) -> Option<Arc<MeshData>> {
         let f = self.files.get(path)?;
         let (len, modified) = stat(path)?;
-        (f.len == len && f.modified == modified).then(|| (*f.data).clone())
+        (f.len == len && f.modified == modified).then(|| f.data.clone())
     }
 
-    /// Remembers the mesh read from `path`.
-    pub(crate) fn store_file(&mut self, path: &Path, m: &MeshData) {
+    /// Remembers the mesh read from `path` and gives it back shared.
+    pub(crate) fn store_file(&mut self, path: &Path, m: MeshData) -> Arc<MeshData> {
+        let data = Arc::new(m);
         if let Some((len, modified)) = stat(path) {
             self.files.insert(
                 path.to_path_buf(),
                 FileMesh {
                     len,
                     modified,
-                    data: Arc::new(m.clone()),
+                    data: data.clone(),
                 },
             );
         }
+        data
     }
 
     /// The shared mesh equal to `data`: the one an earlier evaluation made, or a new
