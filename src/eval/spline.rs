@@ -192,6 +192,7 @@ pub(crate) fn hermite(p0: f64, p1: f64, m0: f64, m1: f64, u: f64) -> f64 {
 
 /// Second derivatives of the natural cubic spline through `p` (zero at the ends),
 /// by the tridiagonal (Thomas) solve.
+#[allow(clippy::needless_range_loop)] // one solve per component, over three arrays
 pub(crate) fn natural_second_derivatives(p: &[(f64, [f64; 5])]) -> Vec<[f64; 5]> {
     let n = p.len();
     let mut m = vec![[0.0; 5]; n];
