@@ -312,7 +312,7 @@ impl Renderer<'_> {
     ) -> Result<Image, i32> {
         let mut out: Option<Image> = None;
         let n = instants.len().max(1);
-        for options in instants {
+        for (j, options) in instants.iter().enumerate() {
             let t0 = Instant::now();
             let scene = match first.take() {
                 Some(s) => s,
@@ -330,10 +330,21 @@ impl Renderer<'_> {
                 }
             };
             let t_eval = t0.elapsed();
-            let settings = Settings {
+            // Motion blur: each instant takes its share of the samples, with its
+            // own sample positions (another seed), so the average is one picture
+            // with `--samples` rays per pixel spread over the shutter.
+            let mut settings = Settings {
                 frame,
                 ..self.settings
             };
+            if n > 1 {
+                settings.seed = settings
+                    .seed
+                    .wrapping_add((j as u64 + 1).wrapping_mul(0x9e37_79b9_7f4a_7c15));
+                if let Sampling::Fixed(s) = settings.sampling {
+                    settings.sampling = Sampling::Fixed(s.div_ceil(n as u32).max(1));
+                }
+            }
             let (width, height, show) = (self.width, self.height, self.show_progress);
             let cache = &mut self.build_cache;
             let mut job = || {
@@ -547,7 +558,13 @@ pub fn run(args: &RenderArgs) -> i32 {
             o.frame_number = 0.0;
             (vec![o], None, 0)
         }
-        (None, n) => (vec![base.clone()], Some(probe), n.unwrap_or(0)),
+        // --frame without a timeline: that frame_number, POV-Ray's single frame.
+        (None, Some(n)) => (
+            sequence::instants(&base, &rts::scene::Timeline::default(), n, None, false),
+            None,
+            n,
+        ),
+        (None, None) => (vec![base.clone()], Some(probe), 0),
     };
     let (output, format) = match output_target(args) {
         Ok((p, f)) => (sequence::frame_path(&p, frame_no), f),

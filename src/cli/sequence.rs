@@ -101,7 +101,6 @@ impl Plan {
     /// The timeline to render: the scene's with the command line's changes, or one
     /// from `--frames` alone; `None` when neither gives one (a still).
     pub fn timeline(&self, scene: Option<Timeline>) -> Option<Timeline> {
-        let had = scene.is_some();
         let mut t = match (scene, self.frames) {
             (Some(t), _) => t,
             (None, Some((a, b))) => Timeline {
@@ -109,14 +108,8 @@ impl Plan {
                 final_frame: b,
                 ..Timeline::default()
             },
-            (None, None) => {
-                if self.fps.is_none() && !self.cyclic && self.shard.is_none() {
-                    return None;
-                }
-                Timeline::default()
-            }
+            (None, None) => return None,
         };
-        let _ = had;
         if let Some(f) = self.fps {
             t.fps = f;
         }
