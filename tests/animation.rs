@@ -502,3 +502,78 @@ fn preview_and_motion_blur() {
     // A zero shutter is no blur.
     assert_eq!(sharp, with("zero.png", &["--motion-blur", "0"]));
 }
+
+/// Mean x (0 left … 1 right) of the clearly red pixels of a PNG.
+fn red_x(path: &Path) -> f64 {
+    let img = image::open(path).unwrap().to_rgb8();
+    let (mut sum, mut n) = (0.0, 0.0);
+    for (x, _, p) in img.enumerate_pixels() {
+        if p.0[0] > 120 && p.0[1] < 60 && p.0[2] < 60 {
+            sum += f64::from(x);
+            n += 1.0;
+        }
+    }
+    assert!(n > 0.0, "no red in {}", path.display());
+    sum / n / f64::from(img.width())
+}
+
+#[test]
+fn camera_path_does_not_flip_over_the_top() {
+    let dir = scratch("pole");
+    let scene = |camera: &str| {
+        format!(
+            r#"
+#version 3.7;
+global_settings {{ assumed_gamma 1.0 }}
+animation {{ frames 101 }}
+{camera}
+light_source {{ <0, 10, 0>, rgb 1 }}
+plane {{ y, 0 pigment {{ rgb 0.5 }} }}
+sphere {{ <1.2, 0, 0>, 0.5 pigment {{ rgb <1, 0, 0> }} finish {{ ambient 1 diffuse 0 }} }}
+"#
+        )
+    };
+    // Up from the front, over the top, down the back (an arc in the y-z plane).
+    let arc =
+        "keyframes { catmull_rom key 0, <0, 0.5, -6>  key 0.5, <0, 6, 0>  key 1, <0, 0.5, 6> }";
+    std::fs::write(
+        dir.join("path.rts"),
+        scene(&format!(
+            "camera_path {{ location {arc} look_at <0, 0, 0> angle 60 }}"
+        )),
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("pov.rts"),
+        scene(&format!(
+            "camera {{ location {arc} look_at <0, 0, 0> angle 60 }}"
+        )),
+    )
+    .unwrap();
+    for (name, clock) in [("before", "0.49"), ("after", "0.51")] {
+        for s in ["path", "pov"] {
+            rts(
+                &dir,
+                &[
+                    "render",
+                    &format!("{s}.rts"),
+                    "-o",
+                    &format!("{s}_{name}.png"),
+                    "-W",
+                    "48",
+                    "-H",
+                    "36",
+                    "-q",
+                    "--clock",
+                    clock,
+                ],
+            );
+        }
+    }
+    // The camera_path keeps the red sphere on the right as it passes over the top …
+    assert!(red_x(&dir.join("path_before.png")) > 0.6);
+    assert!(red_x(&dir.join("path_after.png")) > 0.6);
+    // … where a look_at camera turns the picture over between two close frames.
+    assert!(red_x(&dir.join("pov_before.png")) > 0.6);
+    assert!(red_x(&dir.join("pov_after.png")) < 0.4);
+}
