@@ -412,7 +412,14 @@ fn sequences_assemble_into_gif_and_apng() {
         .expect("an APNG");
     let actl = reader.info().animation_control.expect("animated");
     assert_eq!(actl.num_frames, 6);
-    // Without ffmpeg on PATH the MP4 request names the package to install.
+    // With ffmpeg installed, an MP4; without it on PATH, a message naming the package.
+    let has_ffmpeg = std::env::var_os("PATH")
+        .is_some_and(|p| std::env::split_paths(&p).any(|d| d.join("ffmpeg").is_file()));
+    if has_ffmpeg {
+        let s = sequence(&dir, "a", &["--mp4", "orbit.mp4"]);
+        assert!(s.contains("MP4 → orbit.mp4"), "{s}");
+        assert!(std::fs::metadata(dir.join("orbit.mp4")).unwrap().len() > 0);
+    }
     let empty = dir.join("empty-path");
     std::fs::create_dir_all(&empty).unwrap();
     let out = Command::new(env!("CARGO_BIN_EXE_rts"))
