@@ -310,6 +310,23 @@ fn a_changed_scene_or_include_invalidates_old_frames() {
     let after_inc = sequence(&dir, "f", &[]);
     assert!(after_inc.contains("rendered 6, skipped 0"), "{after_inc}");
     assert_ne!(before, frames_in(&dir.join("f")));
+    // So does a changed mesh file.
+    std::fs::write(dir.join("tri.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+    let text = std::fs::read_to_string(dir.join("orbit.rts")).unwrap();
+    std::fs::write(
+        dir.join("orbit.rts"),
+        text + "mesh { obj_file \"tri.obj\" translate <-1.5, -0.5, -1> pigment { rgb <0, 1, 0> } }\n",
+    )
+    .unwrap();
+    assert!(sequence(&dir, "f", &[]).contains("rendered 6, skipped 0"));
+    assert!(sequence(&dir, "f", &[]).contains("rendered 0, skipped 6"));
+    std::fs::write(
+        dir.join("tri.obj"),
+        "v 0 0 0\nv 1 0 0\nv 0 1.5 0\nf 1 2 3\n",
+    )
+    .unwrap();
+    let after_obj = sequence(&dir, "f", &[]);
+    assert!(after_obj.contains("rendered 6, skipped 0"), "{after_obj}");
     // Other options (here the size) make old frames stale too.
     let bigger = stderr(&rts(
         &dir,

@@ -22,12 +22,21 @@ pub fn fnv64(bytes: &[u8]) -> u64 {
 }
 
 /// Hash of every source text the scene read (the scene file, its includes, `-D`
-/// definitions), in the order they were read.
-pub fn scene_hash(sources: &rts::source::SourceMap) -> u64 {
+/// definitions), in the order they were read, and of the bytes of every data file
+/// it read (meshes, height fields, images).
+pub fn scene_hash<'a>(
+    sources: &rts::source::SourceMap,
+    data_files: impl Iterator<Item = &'a Path>,
+) -> u64 {
     let mut all = Vec::new();
     for (_, f) in sources.files() {
         all.extend_from_slice(&(f.text.len() as u64).to_le_bytes());
         all.extend_from_slice(f.text.as_bytes());
+    }
+    for path in data_files {
+        let bytes = std::fs::read(path).unwrap_or_default();
+        all.extend_from_slice(path.to_string_lossy().as_bytes());
+        all.extend_from_slice(&fnv64(&bytes).to_le_bytes());
     }
     fnv64(&all)
 }

@@ -372,7 +372,7 @@ pub fn run(
         None => all.clone(),
     };
     let mut man = manifest::Manifest::new(
-        manifest::scene_hash(&parsed.sources),
+        manifest::scene_hash(&parsed.sources, parsed.cache.data_files()),
         options_text(r, base, &t, format),
     );
     let man_path = manifest::path_for(&pattern, plan.shard);

@@ -126,6 +126,14 @@ pub struct Evaluated {
 pub struct EvalCache {
     parsed_includes: rustc_hash::FxHashMap<FileId, Option<std::rc::Rc<ast::File>>>,
     pub(crate) meshes: mesh_cache::MeshCache,
+    data_files: std::collections::BTreeSet<PathBuf>,
+}
+
+impl EvalCache {
+    /// Every data file (mesh, height field, image) the evaluations found, sorted.
+    pub fn data_files(&self) -> impl Iterator<Item = &std::path::Path> {
+        self.data_files.iter().map(PathBuf::as_path)
+    }
 }
 
 /// Evaluates a parsed file (already added to `sources` as `file_id`).
@@ -166,12 +174,14 @@ pub fn eval_cached(
         stopped: false,
         parsed_includes: std::mem::take(&mut cache.parsed_includes),
         mesh_cache: std::mem::take(&mut cache.meshes),
+        data_files: Default::default(),
     };
     ev.define_command_line();
     ev.run_top(&file.items);
     cache.parsed_includes = std::mem::take(&mut ev.parsed_includes);
     cache.meshes = std::mem::take(&mut ev.mesh_cache);
     cache.meshes.end();
+    cache.data_files.extend(ev.data_files.take());
     ev.finish_scene()
 }
 
@@ -218,6 +228,8 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) parsed_includes: rustc_hash::FxHashMap<FileId, Option<std::rc::Rc<ast::File>>>,
     /// Meshes kept from earlier evaluations of the same scene.
     pub(crate) mesh_cache: mesh_cache::MeshCache,
+    /// Data files found (for the animation manifest's scene hash).
+    pub(crate) data_files: std::cell::RefCell<Vec<PathBuf>>,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps
