@@ -101,6 +101,17 @@ impl Evaluator<'_> {
         let mut seen: Vec<&str> = Vec::new();
         while let Some(item) = items.next() {
             let Item::Keyword(kw) = item else {
+                if let Item::Expr(e) = item {
+                    if let crate::syntax::ast::ExprKind::Ident(name) = &e.kind {
+                        let c = Cursor::new(Vec::new(), "camera_path", b.span);
+                        return Err(self.unknown_keyword(
+                            &c,
+                            &name.name(),
+                            e.span,
+                            CAMERA_PATH_ITEMS,
+                        ));
+                    }
+                }
                 return Err(Diagnostic::error(
                     codes::UNEXPECTED_ITEM,
                     item.span(),
