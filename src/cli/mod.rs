@@ -3,6 +3,7 @@
 mod assemble;
 mod check;
 mod common;
+mod frame;
 mod manifest;
 mod render;
 mod sequence;

@@ -2,7 +2,8 @@
 //! skipping frames a manifest says are complete, a deterministic share of them
 //! with `--shard I/N`, progress, and assembly into GIF/APNG/MP4.
 
-use super::render::{RenderArgs, Renderer};
+use super::frame::Renderer;
+use super::render::RenderArgs;
 use super::{assemble, common, manifest, EXIT_ERRORS, EXIT_OK, EXIT_USAGE};
 use rts::eval::EvalOptions;
 use rts::scene::Timeline;
