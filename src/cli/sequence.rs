@@ -391,49 +391,94 @@ pub fn run(
     let (mut rendered, mut skipped) = (0usize, 0usize);
     let mut t_frames = Duration::ZERO;
     let mut t_trace = Duration::ZERO;
+    // The same after the first frame rendered (which reads mesh files and builds
+    // their hierarchies once for the whole run).
+    let (mut t_rest, mut t_trace_rest) = (Duration::ZERO, Duration::ZERO);
     let n = mine.len();
-    for (k, &f) in mine.iter().enumerate() {
-        let path = frame_path(&pattern, f);
-        if !args.force && manifest::complete(&existing, &man.key, f, &path) {
-            skipped += 1;
-            continue;
-        }
-        let tf = Instant::now();
-        let instants = instants(base, &t, f, blur, plan.preview);
-        let img = match r.image(parsed, &instants, None, f as u32) {
-            Ok(i) => i,
-            Err(code) => {
-                eprintln!("error: frame {f} failed; frames already written are kept");
-                return code;
+    let key = man.key.clone();
+    // Frames are encoded and written (with the manifest) on a second thread while
+    // the next frame renders; at most one finished frame waits.
+    let (tx, rx) = std::sync::mpsc::sync_channel::<(
+        i64,
+        PathBuf,
+        rts::render::Film,
+        rts::output::OutputOptions,
+    )>(1);
+    let writer_man_path = man_path.clone();
+    let outcome: Result<(), i32> = std::thread::scope(|s| {
+        let writer = s.spawn(move || -> Result<(), String> {
+            let mut man = man;
+            for (f, path, film, out) in rx {
+                rts::output::write_as(&film, &path, format, &out).map_err(|e| e.to_string())?;
+                man.record(f, &path)
+                    .and_then(|_| man.save(&writer_man_path))
+                    .map_err(|e| {
+                        format!(
+                            "cannot write the manifest `{}`: {e}",
+                            writer_man_path.display()
+                        )
+                    })?;
             }
-        };
-        let out = r.output_options(img.assumed_gamma);
-        if let Err(e) = rts::output::write_as(&img.film, &path, format, &out) {
-            eprintln!("error: {e}");
-            return EXIT_ERRORS;
+            Ok(())
+        });
+        let mut failed = None;
+        for (k, &f) in mine.iter().enumerate() {
+            let path = frame_path(&pattern, f);
+            if !args.force && manifest::complete(&existing, &key, f, &path) {
+                skipped += 1;
+                continue;
+            }
+            let tf = Instant::now();
+            let instants = instants(base, &t, f, blur, plan.preview);
+            let img = match r.image(parsed, &instants, None, f as u32) {
+                Ok(i) => i,
+                Err(code) => {
+                    eprintln!("error: frame {f} failed; frames already written are kept");
+                    failed = Some(code);
+                    break;
+                }
+            };
+            let out = r.output_options(img.assumed_gamma);
+            let t_render = img.t_render;
+            if tx.send((f, path.clone(), img.film, out)).is_err() {
+                // The writer stopped on an error, reported below.
+                break;
+            }
+            rendered += 1;
+            let dt = tf.elapsed();
+            t_frames += dt;
+            t_trace += t_render;
+            if rendered > 1 {
+                t_rest += dt;
+                t_trace_rest += t_render;
+            }
+            if show {
+                let left = n - k - 1;
+                let eta = t_frames / rendered as u32 * left as u32;
+                eprintln!(
+                    "frame {}/{n} ({}) in {} · ETA {}",
+                    k + 1,
+                    path.display(),
+                    human(dt),
+                    human(eta)
+                );
+            }
         }
-        if let Err(e) = man.record(f, &path).and_then(|_| man.save(&man_path)) {
-            eprintln!(
-                "error: cannot write the manifest `{}`: {e}",
-                man_path.display()
-            );
-            return EXIT_ERRORS;
+        drop(tx);
+        match writer.join() {
+            Ok(Ok(())) => failed.map_or(Ok(()), Err),
+            Ok(Err(e)) => {
+                eprintln!("error: {e}");
+                Err(EXIT_ERRORS)
+            }
+            Err(_) => {
+                eprintln!("error: the frame writer stopped unexpectedly");
+                Err(EXIT_ERRORS)
+            }
         }
-        rendered += 1;
-        let dt = tf.elapsed();
-        t_frames += dt;
-        t_trace += img.t_render;
-        if show {
-            let left = n - k - 1;
-            let eta = t_frames / rendered as u32 * left as u32;
-            eprintln!(
-                "frame {}/{n} ({}) in {} · ETA {}",
-                k + 1,
-                path.display(),
-                human(dt),
-                human(eta)
-            );
-        }
+    });
+    if let Err(code) = outcome {
+        return code;
     }
     if !args.quiet {
         let avg = if rendered > 0 {
@@ -441,13 +486,24 @@ pub fn run(
         } else {
             Duration::ZERO
         };
-        let outside = if t_frames > Duration::ZERO {
-            100.0 * (1.0 - t_trace.as_secs_f64() / t_frames.as_secs_f64())
+        let share = |trace: Duration, all: Duration| {
+            if all > Duration::ZERO {
+                100.0 * (1.0 - trace.as_secs_f64() / all.as_secs_f64())
+            } else {
+                0.0
+            }
+        };
+        let outside = share(t_trace, t_frames);
+        let later = if rendered > 1 {
+            format!(
+                ", {:.1}% after the first frame",
+                share(t_trace_rest, t_rest)
+            )
         } else {
-            0.0
+            String::new()
         };
         eprintln!(
-            "sequence {} frames {first}..{last}{}: rendered {rendered}, skipped {skipped} already complete, in {} ({} per frame, {outside:.1}% outside tracing) → {}",
+            "sequence {} frames {first}..{last}{}: rendered {rendered}, skipped {skipped} already complete, in {} ({} per frame, {outside:.1}% outside tracing{later}) → {}",
             all.len(),
             plan.shard.map_or(String::new(), |(i, n)| format!(" (shard {i}/{n}: {} frames)", mine.len())),
             human(t_start.elapsed()),
