@@ -1,8 +1,12 @@
 //! The command line: `rts render`, `rts check`. One file per subcommand.
 
+mod assemble;
 mod check;
 mod common;
+mod frame;
+mod manifest;
 mod render;
+mod sequence;
 mod stats;
 
 use clap::{Parser, Subcommand, ValueEnum};
@@ -63,16 +67,16 @@ pub struct SceneArgs {
     /// Refuse arrays with more elements than this.
     #[arg(long, value_name = "N", default_value_t = 1 << 22)]
     pub max_array_size: usize,
-    /// Animation clock value (`clock` in the scene).
-    #[arg(long, value_name = "T", default_value_t = 0.0)]
-    pub clock: f64,
+    /// Evaluate (and render) the scene as a still at this `clock` value.
+    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    pub clock: Option<f64>,
 }
 
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
     /// Render a scene to an image.
-    Render(render::RenderArgs),
+    Render(Box<render::RenderArgs>),
     /// Parse and evaluate scenes without rendering; report problems.
     Check(check::CheckArgs),
 }

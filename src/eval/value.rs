@@ -156,6 +156,8 @@ pub enum Value {
     PigmentMap(Arc<Vec<(f64, Pigment)>>),
     /// A macro.
     Macro(Rc<MacroDef>),
+    /// A `spline { }`, called as `S(t)`.
+    Spline(Rc<super::spline::Spline>),
     /// The value of something whose evaluation failed (already reported); using it
     /// fails silently so one error does not cascade.
     Poison,
@@ -188,6 +190,7 @@ impl Value {
             Value::ColourMap(_) => "a colour map",
             Value::PigmentMap(_) => "a pigment map",
             Value::Macro(_) => "a macro",
+            Value::Spline(_) => "a spline",
             Value::Poison => "an erroneous value",
         }
     }

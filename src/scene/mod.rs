@@ -5,6 +5,7 @@
 //! The types are closed enums so new shapes, patterns and lights are added as variants
 //! without reshaping what exists.
 
+mod animation;
 mod atmosphere;
 mod camera;
 mod light;
@@ -12,6 +13,7 @@ mod material;
 mod object;
 mod transform;
 
+pub use animation::{Timeline, DEFAULT_FPS};
 pub use atmosphere::{Atmosphere, Fog, FogKind, SkySphere};
 pub use camera::{Camera, CameraKind};
 pub use light::{AreaLight, Beam, Light, LightKind};
@@ -39,6 +41,8 @@ pub struct Scene {
     pub global: GlobalSettings,
     /// `sky_sphere` and `fog`.
     pub atmosphere: Atmosphere,
+    /// `animation { … }`: the timeline the scene declares, if any.
+    pub animation: Option<Timeline>,
 }
 
 impl Default for Scene {
@@ -50,6 +54,7 @@ impl Default for Scene {
             background: Colour::BLACK,
             global: GlobalSettings::default(),
             atmosphere: Atmosphere::default(),
+            animation: None,
         }
     }
 }
