@@ -487,7 +487,7 @@ pub const DOCS: &[Doc] = &[
         "interior { ior … fade_distance … }",
         "What is inside a transparent object.",
     ),
-    kw(
+    later(
         "material",
         "material { texture { … } interior { … } }",
         "A texture and interior together.",
@@ -700,18 +700,18 @@ pub const DOCS: &[Doc] = &[
         "falloff F",
         "Reflection falloff exponent; in a spotlight, the outer cone angle.",
     ),
-    kw(
+    later(
         "exponent",
         "exponent E",
         "Exponent of a reflection's or light's falloff.",
     ),
-    kw(
+    later(
         "irid",
         "irid { A thickness T turbulence U }",
         "Iridescence (thin-film colours).",
     ),
-    kw("thickness", "thickness T", "The film thickness of irid."),
-    kw(
+    later("thickness", "thickness T", "The film thickness of irid."),
+    later(
         "reflection_exponent",
         "reflection_exponent E",
         "Non-linear reflection (POV-Ray 3.5 form).",
@@ -892,12 +892,12 @@ pub const DOCS: &[Doc] = &[
         "media_attenuation on|off",
         "Whether media dims the light.",
     ),
-    kw(
+    later(
         "global_lights",
         "global_lights on|off",
         "Whether scene lights also light a light_group.",
     ),
-    kw(
+    later(
         "light_group",
         "light_group { LIGHTS OBJECTS }",
         "Lights that light only the objects of the group.",
@@ -959,31 +959,31 @@ pub const DOCS: &[Doc] = &[
         "fog_alt A",
         "Ground fog: how fast it thins with height.",
     ),
-    kw("radiosity", "radiosity { … }", "Indirect diffuse lighting."),
-    kw("photons", "photons { … }", "Photon mapping for caustics."),
-    kw("media", "media { … }", "Participating media (smoke, haze)."),
+    later("radiosity", "radiosity { … }", "Indirect diffuse lighting."),
+    later("photons", "photons { … }", "Photon mapping for caustics."),
+    later("media", "media { … }", "Participating media (smoke, haze)."),
     // splines
-    kw(
+    later(
         "spline",
         "spline { linear_spline T, <V> … }",
         "A spline through keyed values; call it as `S(T)`.",
     ),
-    kw(
+    later(
         "linear_spline",
         "linear_spline",
         "Spline type: straight segments.",
     ),
-    kw(
+    later(
         "quadratic_spline",
         "quadratic_spline",
         "Spline type: quadratic segments.",
     ),
-    kw(
+    later(
         "cubic_spline",
         "cubic_spline",
         "Spline type: Catmull-Rom cubic.",
     ),
-    kw(
+    later(
         "natural_spline",
         "natural_spline",
         "Spline type: natural cubic.",

@@ -18,6 +18,9 @@ mod problems;
 mod text;
 mod tokens;
 
+#[cfg(test)]
+mod tests;
+
 pub use completion::{completion, CompletionItem, CompletionKind};
 pub use hover::hover;
 pub use navigation::{definition, references};
