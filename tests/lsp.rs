@@ -118,8 +118,8 @@ fn uri(path: &Path) -> String {
     format!("file://{}", path.display())
 }
 
-fn folder() -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rts-lsp-test-{}", std::process::id()));
+fn folder(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rts-lsp-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("dir");
     dir.canonicalize().expect("canonical")
@@ -142,7 +142,7 @@ fn range(d: &Value) -> (u64, u64, u64, u64) {
 
 #[test]
 fn a_session_as_an_editor_has_it() {
-    let dir = folder();
+    let dir = folder("session");
     std::fs::write(
         dir.join("lib.inc"),
         "#declare Size = 2;\n#macro Ball(P) sphere { P, Size } #end\n",
@@ -274,7 +274,14 @@ Ball(<0, Size, 0>)\n";
         json!({"textDocument": {"uri": lib_uri, "languageId": "rts", "version": 1,
                "text": "#declare Size = 2;\n#macro Ball(P) sphere { P, Size } #end\n"}}),
     );
-    let _ = s.diagnostics(&lib_uri);
+    // Both the include and the scene that includes it are checked (in either order).
+    let mut seen = std::collections::HashSet::new();
+    while seen.len() < 2 {
+        let m = s.recv();
+        if m["method"] == "textDocument/publishDiagnostics" {
+            seen.insert(m["params"]["uri"].as_str().expect("uri").to_string());
+        }
+    }
     s.notify(
         "textDocument/didChange",
         json!({"textDocument": {"uri": lib_uri, "version": 2},
@@ -301,8 +308,7 @@ Ball(<0, Size, 0>)\n";
 
 #[test]
 fn garbage_documents_do_not_stop_the_server() {
-    let dir = folder().join("garbage");
-    std::fs::create_dir_all(&dir).expect("dir");
+    let dir = folder("garbage");
     let mut s = Server::start();
     s.request("initialize", json!({"capabilities": {}}));
     s.notify("initialized", json!({}));
@@ -330,6 +336,49 @@ fn garbage_documents_do_not_stop_the_server() {
         s.request(
             "textDocument/semanticTokens/full",
             json!({"textDocument": {"uri": u}}),
+        );
+    }
+}
+
+/// The VS Code grammar highlights every keyword of the grammar and every built-in, so
+/// it cannot drift from the language.
+#[test]
+fn the_vscode_grammar_knows_every_word() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(root.join("editors/vscode/syntaxes/rts.tmLanguage.json"))
+        .expect("grammar");
+    let g: Value = serde_json::from_str(&text).expect("JSON");
+    assert_eq!(g["scopeName"], "source.rts");
+    let words = g["repository"]["words"]["patterns"]
+        .as_array()
+        .expect("patterns");
+    let alternatives = |scope: &str| -> Vec<String> {
+        let m = words
+            .iter()
+            .find(|p| p["name"] == scope)
+            .and_then(|p| p["match"].as_str())
+            .expect(scope);
+        let inner = m.trim_start_matches("\\b(").trim_end_matches(")\\b");
+        inner.split('|').map(str::to_string).collect()
+    };
+    let keywords = alternatives("keyword.other.rts");
+    for k in rts::syntax::keywords::KEYWORDS {
+        assert!(
+            keywords.iter().any(|w| w == k),
+            "`{k}` missing from the grammar"
+        );
+    }
+    let functions = alternatives("support.function.builtin.rts");
+    let constants = alternatives("constant.language.rts");
+    for (i, b) in rts::eval::BUILTIN_NAMES.iter().enumerate() {
+        let list = if rts::eval::is_builtin_function(i) {
+            &functions
+        } else {
+            &constants
+        };
+        assert!(
+            list.iter().any(|w| w == b),
+            "built-in `{b}` missing from the grammar"
         );
     }
 }
