@@ -9,7 +9,7 @@ use crate::span::{FileId, Span};
 use crate::syntax::ast::{
     Arg, ArrayElem, ArrayInit, Block, CaseTest, DirectiveKind, Expr, ExprKind, Item, Rhs,
 };
-use crate::syntax::{self, Sym};
+use crate::syntax::Sym;
 use rustc_hash::FxHashSet;
 use std::path::{Path, PathBuf};
 
@@ -512,7 +512,7 @@ impl Builder<'_> {
             return Some(id);
         }
         let text = self.sources.get(id).text.clone();
-        let (file, _) = syntax::parse(&text, id);
+        let (file, _) = super::incremental::parse(&text, id);
         self.index.files.push(id);
         self.depth += 1;
         self.items(&file.items, None, id);

@@ -11,6 +11,7 @@
 mod completion;
 pub mod docs;
 mod hover;
+mod incremental;
 pub mod index;
 pub mod lexer;
 mod navigation;
@@ -91,7 +92,7 @@ pub fn analyze(
         Some(main_path),
         text.to_string(),
     );
-    let (file, mut raw) = crate::syntax::parse(text, main);
+    let (file, mut raw) = incremental::parse(text, main);
     let mut globals = Vec::new();
     if !crate::diag::has_errors(&raw) {
         let evaluated = eval::eval(&file, main, &mut sources, options);
