@@ -381,6 +381,12 @@ impl LanguageServer for Backend {
                     }),
                     detail: Some(c.detail),
                     insert_text_format: c.snippet.as_ref().map(|_| lsp::InsertTextFormat::SNIPPET),
+                    text_edit: c.replace.map(|r| {
+                        lsp::CompletionTextEdit::Edit(lsp::TextEdit {
+                            range: range(r),
+                            new_text: c.label.clone(),
+                        })
+                    }),
                     insert_text: c.snippet,
                     label: c.label,
                     ..Default::default()

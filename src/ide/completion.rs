@@ -4,7 +4,7 @@
 
 use super::index::{include_candidates, DefKind};
 use super::lexer::{context, Context};
-use super::{docs, Analysis, Position};
+use super::{docs, Analysis, Position, Range};
 use crate::eval::{block_keywords, TOP_LEVEL_KEYWORDS};
 use crate::syntax::keywords::KEYWORDS;
 use std::collections::HashSet;
@@ -40,6 +40,9 @@ pub struct CompletionItem {
     pub detail: String,
     /// A snippet to insert instead of the label (`$1` placeholders), for macros.
     pub snippet: Option<String>,
+    /// The text the item replaces, when it is not the word before the cursor (the
+    /// typed part of an `#include` file name, which may hold `/` and `.`).
+    pub replace: Option<Range>,
 }
 
 fn item(label: &str, kind: CompletionKind, detail: &str) -> CompletionItem {
@@ -48,6 +51,7 @@ fn item(label: &str, kind: CompletionKind, detail: &str) -> CompletionItem {
         kind,
         detail: detail.to_string(),
         snippet: None,
+        replace: None,
     }
 }
 
@@ -63,9 +67,13 @@ pub fn completion(a: &Analysis, pos: Position) -> Vec<CompletionItem> {
             .collect(),
         Context::IncludeName(prefix) => {
             let dir = a.sources.get(a.main).dir().map(Path::to_path_buf);
+            let typed = a.lines.range(a.text(), offset - prefix.len(), offset);
             include_candidates(dir.as_deref(), &a.options, &prefix)
                 .into_iter()
-                .map(|n| item(&n, CompletionKind::File, "include file"))
+                .map(|n| CompletionItem {
+                    replace: Some(typed),
+                    ..item(&n, CompletionKind::File, "include file")
+                })
                 .collect()
         }
         Context::Items(block) => {
