@@ -90,6 +90,19 @@ sphere { 0, 1.5 pigment { C } finish { ambient 1 diffuse 0 } }\n";
         // Fixed again (saved by rename): a new image.
         save(&scene, &text.replace("1.5", "0.5"));
         wait_for_change(&out, &second);
+
+        // Then nothing more happens: reading the files does not trigger renders.
+        std::thread::sleep(Duration::from_millis(500));
+        let settled = std::fs::metadata(&out)
+            .expect("out")
+            .modified()
+            .expect("mtime");
+        std::thread::sleep(Duration::from_millis(1000));
+        let later = std::fs::metadata(&out)
+            .expect("out")
+            .modified()
+            .expect("mtime");
+        assert_eq!(settled, later, "rts watch keeps rendering without changes");
     });
     let _ = child.kill();
     let _ = child.wait();

@@ -10,7 +10,9 @@ use notify_debouncer_mini::notify::RecursiveMode;
 use notify_debouncer_mini::{new_debouncer, DebounceEventResult};
 use rts::output::OutputOptions;
 use rts::render::{Antialias, Film, RenderOptions, Sampling, Settings};
-use std::collections::HashSet;
+use std::collections::hash_map::DefaultHasher;
+use std::collections::{HashMap, HashSet};
+use std::hash::{Hash, Hasher};
 use std::path::{Path, PathBuf};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
@@ -80,6 +82,9 @@ pub fn run(args: &WatchArgs) -> i32 {
     let mut watched_dirs: HashSet<PathBuf> = HashSet::new();
     loop {
         let files = render_once(args, &options);
+        // Reading files makes events too (and editors touch files without changing
+        // them): only a change of contents starts a new render.
+        let seen = fingerprint(&files);
         // Watch the folder of every file read (new includes may have appeared).
         for dir in files.iter().filter_map(|f| f.parent()) {
             if watched_dirs.insert(dir.to_path_buf()) {
@@ -101,7 +106,7 @@ pub fn run(args: &WatchArgs) -> i32 {
                 let p = e.path.canonicalize().unwrap_or_else(|_| e.path.clone());
                 files.contains(&p)
             });
-            if hit {
+            if hit && fingerprint(&files) != seen {
                 // Collect any further events of the same save.
                 while rx.try_recv().is_ok() {}
                 break;
@@ -192,6 +197,22 @@ fn render_once(args: &WatchArgs, options: &rts::eval::EvalOptions) -> HashSet<Pa
         );
     }
     files
+}
+
+/// A hash of each file's contents (`None`: unreadable), to tell real changes from
+/// events that changed nothing.
+fn fingerprint(files: &HashSet<PathBuf>) -> HashMap<PathBuf, Option<u64>> {
+    files
+        .iter()
+        .map(|f| {
+            let h = std::fs::read(f).ok().map(|bytes| {
+                let mut h = DefaultHasher::new();
+                bytes.hash(&mut h);
+                h.finish()
+            });
+            (f.clone(), h)
+        })
+        .collect()
 }
 
 fn canonical(p: &Path) -> PathBuf {
