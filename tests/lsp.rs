@@ -382,3 +382,48 @@ fn the_vscode_grammar_knows_every_word() {
         );
     }
 }
+
+/// An include changed outside the editor (the client watches files for the server):
+/// the open scene that includes it is checked again.
+#[test]
+fn includes_changed_on_disk_recheck_the_scene() {
+    let dir = folder("watched");
+    let lib = dir.join("lib.inc");
+    std::fs::write(&lib, "#declare Size = 2;\n").expect("write");
+    let scene = dir.join("scene.rts");
+    let text = "global_settings { assumed_gamma 1.0 }\n\
+light_source { <0, 5, -5> rgb 1 }\n#include \"lib.inc\"\nsphere { 0, Size }\n";
+    let scene_uri = uri(&scene);
+    let mut s = Server::start();
+    s.request(
+        "initialize",
+        json!({"capabilities": {"workspace": {"didChangeWatchedFiles": {"dynamicRegistration": true}}}}),
+    );
+    s.notify("initialized", json!({}));
+    // The server asks the client to watch scene files; answer it.
+    let reg = loop {
+        let m = s.recv();
+        if m["method"] == "client/registerCapability" {
+            break m;
+        }
+    };
+    assert_eq!(
+        reg["params"]["registrations"][0]["method"],
+        "workspace/didChangeWatchedFiles"
+    );
+    s.send(json!({"jsonrpc": "2.0", "id": reg["id"], "result": null}));
+    s.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": scene_uri, "languageId": "rts", "version": 1, "text": text}}),
+    );
+    assert!(errors(&s.diagnostics(&scene_uri)).is_empty());
+    std::fs::write(&lib, "#declare Sizes = 2;\n").expect("write");
+    s.notify(
+        "workspace/didChangeWatchedFiles",
+        json!({"changes": [{"uri": uri(&lib), "type": 2}]}),
+    );
+    let diags = s.diagnostics(&scene_uri);
+    let errs = errors(&diags);
+    assert_eq!(errs.len(), 1, "{diags:#?}");
+    assert_eq!(range(errs[0]).0, 3);
+}

@@ -37,6 +37,8 @@ struct Doc {
 struct State {
     docs: HashMap<lsp::Uri, Doc>,
     options: EvalOptions,
+    /// The client can watch files for us (include files changed outside the editor).
+    watch_files: bool,
 }
 
 struct Backend {
@@ -58,6 +60,7 @@ pub fn run(args: &LspArgs) -> i32 {
         let state = Arc::new(Mutex::new(State {
             docs: HashMap::new(),
             options,
+            watch_files: false,
         }));
         let (service, socket) = LspService::new(|client| Backend { client, state });
         Server::new(tokio::io::stdin(), tokio::io::stdout(), socket)
@@ -176,12 +179,22 @@ impl Backend {
 
     /// Analyses `uri` and the open documents that include it; publishes diagnostics.
     async fn refresh(&self, uri: &lsp::Uri) {
+        let Some(changed) = lock(&self.state)
+            .docs
+            .get(uri)
+            .map(|d| ide::canonical(&d.path))
+        else {
+            return;
+        };
+        self.refresh_path(Some(uri), &changed).await;
+    }
+
+    /// Analyses `uri` (when given) and the open documents that include the file
+    /// `changed`; publishes their diagnostics.
+    async fn refresh_path(&self, uri: Option<&lsp::Uri>, changed: &Path) {
         let mut published = Vec::new();
         {
             let mut st = lock(&self.state);
-            let Some(changed) = st.docs.get(uri).map(|d| ide::canonical(&d.path)) else {
-                return;
-            };
             let overlays: HashMap<PathBuf, String> = st
                 .docs
                 .values()
@@ -192,10 +205,10 @@ impl Backend {
                 .docs
                 .iter()
                 .filter(|(u, d)| {
-                    *u == uri
+                    Some(*u) == uri
                         || d.analysis
                             .as_ref()
-                            .is_some_and(|a| a.included_paths().contains(&changed))
+                            .is_some_and(|a| a.included_paths().iter().any(|p| p == changed))
                 })
                 .map(|(u, _)| u.clone())
                 .collect();
@@ -245,6 +258,13 @@ impl LanguageServer for Backend {
                 .include_dirs
                 .extend(dirs.iter().filter_map(|d| d.as_str()).map(PathBuf::from));
         }
+        lock(&self.state).watch_files = params
+            .capabilities
+            .workspace
+            .as_ref()
+            .and_then(|w| w.did_change_watched_files.as_ref())
+            .and_then(|d| d.dynamic_registration)
+            .unwrap_or(false);
         let legend = lsp::SemanticTokensLegend {
             token_types: ide::TOKEN_TYPES
                 .iter()
@@ -289,6 +309,35 @@ impl LanguageServer for Backend {
             }),
             ..Default::default()
         })
+    }
+
+    async fn initialized(&self, _: lsp::InitializedParams) {
+        if !lock(&self.state).watch_files {
+            return;
+        }
+        let options = lsp::DidChangeWatchedFilesRegistrationOptions {
+            watchers: ["**/*.rts", "**/*.inc", "**/*.pov"]
+                .iter()
+                .map(|g| lsp::FileSystemWatcher {
+                    glob_pattern: lsp::GlobPattern::String((*g).to_string()),
+                    kind: None,
+                })
+                .collect(),
+        };
+        let registration = lsp::Registration {
+            id: "rts-watch-includes".into(),
+            method: "workspace/didChangeWatchedFiles".into(),
+            register_options: serde_json::to_value(options).ok(),
+        };
+        let _ = self.client.register_capability(vec![registration]).await;
+    }
+
+    async fn did_change_watched_files(&self, params: lsp::DidChangeWatchedFilesParams) {
+        // An include changed outside the editor: check the open scenes that read it.
+        for change in params.changes {
+            let path = ide::canonical(&to_path(&change.uri));
+            self.refresh_path(None, &path).await;
+        }
     }
 
     async fn shutdown(&self) -> Result<()> {
