@@ -17,7 +17,7 @@ use std::cell::RefCell;
 use std::rc::Rc;
 
 /// Chunks kept between parses (per thread: syntax trees are not `Send`).
-const MAX_CACHED: usize = 50_000;
+const MAX_CACHED: usize = 20_000;
 
 thread_local! {
     static CACHE: RefCell<FxHashMap<String, Rc<Vec<Item>>>> = RefCell::new(FxHashMap::default());
