@@ -266,6 +266,11 @@ Ball(<0, Size, 0>)\n";
         json!({"textDocument": {"uri": scene_uri}}),
     );
     assert_eq!(t["data"].as_array().expect("data").len() % 5, 0);
+    let f = s.request(
+        "textDocument/formatting",
+        json!({"textDocument": {"uri": scene_uri}, "options": {"tabSize": 2, "insertSpaces": true}}),
+    );
+    assert!(f.is_array(), "{f}");
 
     // Opening the include and breaking it re-checks the scene that includes it.
     let lib_uri = uri(&dir.join("lib.inc"));

@@ -293,6 +293,7 @@ impl LanguageServer for Backend {
                 definition_provider: Some(lsp::OneOf::Left(true)),
                 references_provider: Some(lsp::OneOf::Left(true)),
                 document_symbol_provider: Some(lsp::OneOf::Left(true)),
+                document_formatting_provider: Some(lsp::OneOf::Left(true)),
                 semantic_tokens_provider: Some(
                     lsp::SemanticTokensOptions {
                         legend,
@@ -479,6 +480,32 @@ impl LanguageServer for Backend {
         };
         let symbols = guarded(|| ide::outline(&a).iter().map(|o| symbol(o, &a)).collect());
         Ok(symbols.map(lsp::DocumentSymbolResponse::Nested))
+    }
+
+    async fn formatting(
+        &self,
+        params: lsp::DocumentFormattingParams,
+    ) -> Result<Option<Vec<lsp::TextEdit>>> {
+        let Some(a) = self.analysis(&params.text_document.uri) else {
+            return Ok(None);
+        };
+        let unit = if params.options.insert_spaces {
+            " ".repeat(params.options.tab_size.clamp(1, 16) as usize)
+        } else {
+            "\t".to_string()
+        };
+        let text = a.text();
+        let Some(formatted) = guarded(|| ide::format(text, &unit)) else {
+            return Ok(None);
+        };
+        if formatted == text {
+            return Ok(Some(Vec::new()));
+        }
+        let whole = ide::LineIndex::new(text).range(text, 0, text.len());
+        Ok(Some(vec![lsp::TextEdit {
+            range: range(whole),
+            new_text: formatted,
+        }]))
     }
 
     async fn semantic_tokens_full(

@@ -3,13 +3,15 @@
 //!
 //! [`analyze`] parses and evaluates a document exactly as `rts check` does and indexes
 //! its names ([`index::Index`]); the feature functions ([`diagnostics`], [`hover`],
-//! [`completion`], [`definition`], [`references`], [`outline`], [`semantic_tokens`])
+//! [`completion`], [`definition`], [`references`], [`outline`], [`semantic_tokens`],
+//! [`format`])
 //! answer questions about the result, with positions in UTF-16 as editors count them.
 //! The only I/O is reading included files through the evaluator's file search; texts of
 //! documents open in the editor are given as overlays and win over the disk.
 
 mod completion;
 pub mod docs;
+mod format;
 mod hover;
 mod incremental;
 pub mod index;
@@ -23,6 +25,7 @@ mod tokens;
 mod tests;
 
 pub use completion::{completion, CompletionItem, CompletionKind};
+pub use format::format;
 pub use hover::hover;
 pub use navigation::{definition, references};
 pub use problems::{diagnostics, IdeDiagnostic, Related};
