@@ -19,6 +19,12 @@ fn check(text: String, positions: Vec<(u32, u32)>) {
             let _ = ide::diagnostics(&a);
             let _ = ide::semantic_tokens(&a);
             let _ = ide::outline(&a);
+            let formatted = ide::format(&text, "  ");
+            assert_eq!(
+                ide::format(&formatted, "  "),
+                formatted,
+                "formatting is idempotent"
+            );
             for (line, character) in positions {
                 let p = Position { line, character };
                 let _ = ide::hover(&a, p);
