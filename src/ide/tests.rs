@@ -325,3 +325,52 @@ fn broken_documents_still_answer() {
     assert!(hover(&a, at(&a, "finish", 0, 1)).is_some());
     assert!(!semantic_tokens(&a).is_empty());
 }
+
+/// The editor reports what `rts check` reports: on every error fixture, the same codes
+/// at the same places (parse, then evaluate when the parse is clean).
+#[test]
+fn same_diagnostics_as_check_on_the_fixtures() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/err");
+    let options = EvalOptions::default();
+    let mut n = 0;
+    for e in std::fs::read_dir(&root).expect("dir").flatten() {
+        let path = e.path();
+        let Ok(text) = std::fs::read_to_string(&path) else {
+            continue;
+        };
+        if path.extension().is_none_or(|x| x != "rts") {
+            continue;
+        }
+        let mut sources = SourceMap::new();
+        let id = sources.add(
+            path.display().to_string(),
+            Some(canonical(&path)),
+            text.clone(),
+        );
+        let (file, mut want) = crate::syntax::parse(&text, id);
+        if !crate::diag::has_errors(&want) {
+            want.extend(eval::eval(&file, id, &mut sources, &options).diagnostics);
+        }
+        let a = analyze(&path, &text, &HashMap::new(), &options);
+        let key = |d: &[Diagnostic], s: &SourceMap| {
+            d.iter()
+                .map(|d| {
+                    (
+                        d.code,
+                        s.get(d.span.file).name.clone(),
+                        d.span.start,
+                        d.span.end,
+                    )
+                })
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(
+            key(&a.raw_diagnostics, &a.sources),
+            key(&want, &sources),
+            "{}",
+            path.display()
+        );
+        n += 1;
+    }
+    assert!(n > 20, "only {n} fixtures");
+}
