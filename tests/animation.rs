@@ -601,3 +601,27 @@ sphere {{ <1.2, 0, 0>, 0.5 pigment {{ rgb <1, 0, 0> }} finish {{ ambient 1 diffu
     assert!(red_x(&dir.join("pov_before.png")) > 0.6);
     assert!(red_x(&dir.join("pov_after.png")) < 0.4);
 }
+
+#[test]
+fn keyframes_are_operands_in_expressions() {
+    // `2 * keyframes { key 0, 1 key 1, 3 } + 1` is 3, 5 and 7 at clock 0, 0.5 and 1.
+    let fixture =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/ok/anim_keyframes_expr.rts");
+    let dir = scratch("kf_operand");
+    for (clock, want) in [("0", "V=3.000"), ("0.5", "V=5.000"), ("1", "V=7.000")] {
+        let out = rts(
+            &dir,
+            &[
+                "check",
+                fixture.to_str().unwrap(),
+                "--clock",
+                clock,
+                "--message-format",
+                "short",
+            ],
+        );
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(out.status.success(), "{text}");
+        assert!(text.contains(want), "clock {clock}: {text}");
+    }
+}

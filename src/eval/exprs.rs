@@ -154,6 +154,7 @@ impl Evaluator<'_> {
                 Ok(Value::Colour(colour_from_array(c)))
             }
             ExprKind::Array { dims, init } => self.array(dims, init.as_ref(), e.span),
+            ExprKind::Block(b) => self.block_value(b),
         }
     }
 

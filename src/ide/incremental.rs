@@ -315,6 +315,7 @@ impl Shift {
                 dims: dims.iter().map(|x| self.expr(x)).collect(),
                 init: init.as_ref().map(|i| self.array_init(i)),
             },
+            ExprKind::Block(b) => ExprKind::Block(Box::new(self.block(b))),
         };
         Expr {
             kind,

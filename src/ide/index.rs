@@ -572,6 +572,7 @@ impl Builder<'_> {
                     self.array_init(i);
                 }
             }
+            ExprKind::Block(b) => self.block_in_expr(b),
         }
     }
 

@@ -372,6 +372,8 @@ pub enum ExprKind {
         /// `red R`-style parts after it.
         parts: Vec<(ColourPart, Expr)>,
     },
+    /// `keyframes { … }` as an operand: `2 * keyframes { key 0, 1 key 1, 3 }`.
+    Block(Box<Block>),
     /// `array[N]…[M] { … }`.
     Array {
         /// The sizes.

@@ -447,6 +447,13 @@ impl Lowerer {
                 kind: ExprKind::Ident(intern(p.as_str())),
                 span,
             },
+            Rule::value_block => {
+                let b = self.block(p.into_inner().next().expect("value block"));
+                Expr {
+                    kind: ExprKind::Block(Box::new(b)),
+                    span,
+                }
+            }
             other => unreachable!("not an expression rule: {other:?}"),
         }
     }

@@ -77,6 +77,7 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         Rule::array | Rule::array_kw => "an array",
         Rule::array_init => "`{`",
         Rule::call => "a function call",
+        Rule::value_block => "a keyframes block",
         Rule::number => "a number",
         Rule::string | Rule::string_inner => "a string",
         Rule::ident_char => return None,
