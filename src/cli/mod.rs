@@ -2,6 +2,7 @@
 
 mod check;
 mod common;
+mod path_opts;
 mod render;
 mod stats;
 

@@ -95,6 +95,9 @@ pub struct RenderArgs {
     /// Options for reading the scene.
     #[command(flatten)]
     pub scene: SceneArgs,
+    /// Path tracer options.
+    #[command(flatten)]
+    pub path: super::path_opts::PathArgs,
 }
 
 /// Why the options cannot be used.
@@ -261,6 +264,11 @@ pub fn run(args: &RenderArgs) -> i32 {
         return EXIT_ERRORS;
     };
     let t_parse = t0.elapsed();
+    if let Some(status) =
+        super::path_opts::run(args, &scene, &output, format, &settings, t_start, t_parse)
+    {
+        return status;
+    }
     let progress = Progress::default();
     let show_progress = !args.quiet && stats::stderr_is_terminal();
     let job = || {

@@ -55,6 +55,7 @@ const BLOCKS: &[&str] = &[
     "sky_sphere",
     "fog",
     "looks_like",
+    "path_tracing",
 ];
 
 /// POV-Ray blocks that a later release implements.
@@ -145,6 +146,10 @@ impl Evaluator<'_> {
             }
             "fog" => {
                 self.fog(&mut c)?;
+                return Ok(None);
+            }
+            "path_tracing" => {
+                self.path_tracing(&mut c)?;
                 return Ok(None);
             }
             "global_settings" => {

@@ -19,6 +19,7 @@ mod lights;
 mod materials;
 mod mesh;
 mod objects;
+mod path_tracing;
 mod patterns;
 mod scope;
 mod shapes;

@@ -12,6 +12,7 @@ mod camera;
 mod film;
 mod lights;
 mod passes;
+pub mod path;
 mod pigment;
 mod sampler;
 mod shade;
