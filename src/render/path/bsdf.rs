@@ -201,6 +201,9 @@ impl Bsdf {
             f += self.diffuse * FRAC_1_PI * cos_i;
             pdf += w[0] / total * cos_i * FRAC_1_PI;
         }
+        if !((w[1] > 0.0 && self.spec_alpha > 0.0) || (w[2] > 0.0 && self.gloss_alpha > 0.0)) {
+            return (f, pdf);
+        }
         let frame = Frame::new(n);
         let (lo, li) = (frame.local(wo), frame.local(wi));
         for (k, colour, alpha) in [
