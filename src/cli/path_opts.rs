@@ -13,6 +13,9 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
+/// Most samples per pixel (the period of the per-pixel Sobol sequence).
+const MAX_SPP: u32 = 1 << 16;
+
 /// Which renderer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Integrator {
@@ -133,8 +136,11 @@ fn plan(p: &PathArgs, scene_pt: Option<&PathTracing>, output: &Path) -> Result<P
     let limit = p.time_limit.as_deref().map(parse_duration).transpose()?;
     let spp = match (p.spp, limit) {
         (Some(0), _) => return Err("--spp must be at least 1".into()),
+        (Some(n), _) if n > MAX_SPP => {
+            return Err(format!("--spp {n}: at most {MAX_SPP} samples per pixel"))
+        }
         (Some(n), _) => n,
-        (None, Some(_)) => u32::MAX,
+        (None, Some(_)) => MAX_SPP,
         (None, None) => base.samples,
     };
     if !(p.save_every.is_finite() && p.save_every > 0.0) {

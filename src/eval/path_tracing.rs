@@ -32,7 +32,7 @@ impl Evaluator<'_> {
             let r: R<()> = match tok {
                 Tok::Kw("samples", span) => c.once("samples", span).and_then(|()| {
                     let (v, s) = c.value("the samples per pixel")?;
-                    p.samples = whole("samples", self.to_float(&v, s)?, 1.0, 1e6, s)?;
+                    p.samples = whole("samples", self.to_float(&v, s)?, 1.0, 65536.0, s)?;
                     Ok(())
                 }),
                 Tok::Kw("max_depth", span) => c.once("max_depth", span).and_then(|()| {
