@@ -73,7 +73,7 @@ pub struct SceneArgs {
 #[derive(Debug, Subcommand)]
 pub enum Command {
     /// Render a scene to an image.
-    Render(render::RenderArgs),
+    Render(Box<render::RenderArgs>),
     /// Parse and evaluate scenes without rendering; report problems.
     Check(check::CheckArgs),
 }

@@ -48,7 +48,7 @@ impl Sampler {
         let d = self.dimension;
         self.dimension += 1;
         if d < SOBOL_DIMENSIONS {
-            if d % 4 == 0 {
+            if d.is_multiple_of(4) {
                 self.cached = sobol_burley::sample_4d(self.index, d / 4, self.pixel_key);
             }
             return f64::from(self.cached[d as usize % 4]);
