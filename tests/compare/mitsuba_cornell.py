@@ -179,15 +179,19 @@ def main():
     ap.add_argument("--seconds", type=float, default=5.0, help="equal-time budget")
     ap.add_argument("--scalar", action="store_true", help="also time Mitsuba scalar_rgb")
     ap.add_argument("--save", metavar="DIR", help="write the images as .npy here")
+    ap.add_argument("--ref-npy", metavar="FILE", help="use this reference (a ref.npy of --save) instead of rendering one")
     args = ap.parse_args()
     if args.write_scene:
         write_scene(args.write_scene)
         return
     px = args.size * args.size
     results = {}
-    print("reference: Mitsuba llvm_ad_rgb, %d spp ..." % args.ref_spp, flush=True)
-    ref, t_ref = mitsuba_render("llvm_ad_rgb", args.ref_spp, args.size, seed=12345)
-    print("  %.1fs" % t_ref)
+    if args.ref_npy:
+        ref = np.load(args.ref_npy)
+    else:
+        print("reference: Mitsuba llvm_ad_rgb, %d spp ..." % args.ref_spp, flush=True)
+        ref, t_ref = mitsuba_render("llvm_ad_rgb", args.ref_spp, args.size, seed=12345)
+        print("  %.1fs" % t_ref)
     # Speed (warm-up first so the JIT is compiled and cached).
     mitsuba_render("llvm_ad_rgb", 4, args.size, seed=1)
     mi_img, mi_t = mitsuba_render("llvm_ad_rgb", args.spp, args.size, seed=2)

@@ -410,7 +410,11 @@ mod tests {
             let axis = nrm.abs().max_position();
             counts[axis] += 1;
             assert!(p[axis] == 0.0 || p[axis] == [1.0, 2.0, 4.0][axis]);
-            assert_eq!(shape_normal(&s, p, 0), nrm);
+            let size = [1.0, 2.0, 4.0];
+            let on_edge = (0..3).any(|k| k != axis && (p[k] == 0.0 || p[k] == size[k]));
+            if !on_edge {
+                assert_eq!(shape_normal(&s, p, 0), nrm);
+            }
         }
         // Face areas: yz 8, zx 4, xy 2 → shares 8/14, 4/14, 2/14.
         let total = f64::from(counts.iter().sum::<u32>());

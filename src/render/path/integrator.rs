@@ -11,7 +11,7 @@ use crate::render::{sky, RayStats, Sampler};
 use glam::DVec3;
 
 /// Bounces after which Russian roulette may end a path.
-const ROULETTE_AFTER: u32 = 3;
+const ROULETTE_AFTER: u32 = 5;
 
 /// A world prepared for path tracing.
 pub struct PathScene<'a> {
