@@ -21,6 +21,8 @@ pub struct PathScene<'a> {
     pub emitters: Emitters,
     /// Longest path in segments (1: only what the camera sees directly).
     pub max_depth: u32,
+    /// Whether any surface may let shadow rays through.
+    pub clear: bool,
 }
 
 impl<'a> PathScene<'a> {
@@ -30,6 +32,7 @@ impl<'a> PathScene<'a> {
             world,
             emitters: Emitters::new(world),
             max_depth: max_depth.max(1),
+            clear: lights::any_transparent(world),
         }
     }
 }
@@ -147,6 +150,7 @@ pub fn radiance(
                 } else {
                     lights::transmittance(
                         world,
+                        sc.clear,
                         s.p,
                         s.geo_normal,
                         ls.wi,
@@ -173,6 +177,7 @@ pub fn radiance(
                             let reach = dist * (1.0 - 1e-7) - crate::build::surface_offset(ep.p);
                             let vis = lights::transmittance(
                                 world,
+                                sc.clear,
                                 s.p,
                                 s.geo_normal,
                                 wi,
