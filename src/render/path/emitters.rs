@@ -60,6 +60,9 @@ struct Emitter {
     shape: Sampled,
     /// Area in the shape's own space.
     area: f64,
+    /// World centre and radius of a sphere kept round by its transform: sampled
+    /// by the solid angle it subtends instead of by area.
+    ball: Option<(DVec3, f64)>,
 }
 
 /// Every emitter of a world, and the `looks_like` objects.
@@ -175,10 +178,26 @@ impl Emitters {
                     .powf(2.0 / 3.0)
             });
             total += area * scale * power;
+            let ball = match (&shape, &prim.transform) {
+                (Sampled::Sphere { center, radius }, None) => Some((*center, *radius)),
+                (Sampled::Sphere { center, radius }, Some(t)) => {
+                    let m = DMat3::from_mat4(t.matrix);
+                    let (a, b, c) = (m.x_axis, m.y_axis, m.z_axis);
+                    let l = a.length();
+                    let round = (b.length() - l).abs() < 1e-9 * l
+                        && (c.length() - l).abs() < 1e-9 * l
+                        && a.dot(b).abs() < 1e-9 * l * l
+                        && b.dot(c).abs() < 1e-9 * l * l
+                        && a.dot(c).abs() < 1e-9 * l * l;
+                    round.then(|| (t.point(*center), radius * l))
+                }
+                _ => None,
+            };
             e.list.push(Emitter {
                 prim: i as u32,
                 shape,
                 area,
+                ball,
             });
             e.cdf.push(total);
             e.index[i] = e.list.len() as u32;
@@ -204,8 +223,15 @@ impl Emitters {
         (self.cdf[k] - lo) / total
     }
 
-    /// A point on an emitter: `u` picks the emitter, `u2` the point.
-    pub fn sample(&self, world: &World, u: f64, u2: (f64, f64)) -> Option<EmitterPoint> {
+    /// A point on an emitter for lighting point `from`: `u` picks the emitter, `u2`
+    /// the point.
+    pub fn sample(
+        &self,
+        world: &World,
+        from: DVec3,
+        u: f64,
+        u2: (f64, f64),
+    ) -> Option<EmitterPoint> {
         let total = *self.cdf.last()?;
         let x = u * total;
         let k = self
@@ -213,8 +239,18 @@ impl Emitters {
             .partition_point(|c| *c <= x)
             .min(self.list.len() - 1);
         let e = &self.list[k];
-        let (p_obj, n_obj) = sample_shape(&e.shape, u2);
         let prim = &world.primitives[e.prim as usize];
+        if let Some(cone) = e.ball.and_then(|(c, r)| Cone::new(c, r, from)) {
+            let (p, n) = cone.sample(u2);
+            let radiance = emitted(&prim.texture, prim.texture_from_world.as_ref(), p);
+            return Some(EmitterPoint {
+                p,
+                n,
+                pdf_area: self.pick_pdf(k) * cone.pdf_area(p, n, from),
+                radiance,
+            });
+        }
+        let (p_obj, n_obj) = sample_shape(&e.shape, u2);
         let (p, n, jac) = to_world(
             prim.transform.as_ref().map(|t| (&t.matrix, &t.inverse)),
             p_obj,
@@ -230,15 +266,19 @@ impl Emitters {
     }
 
     /// The density (per unit world area, including the pick) with which
-    /// [`Emitters::sample`] returns world point `p` on primitive `prim`; 0 when that
-    /// primitive is not sampled.
-    /// `sub` is the hit's part (the triangle of a mesh).
-    pub fn pdf_area(&self, world: &World, prim: u32, sub: u32, p: DVec3) -> f64 {
+    /// [`Emitters::sample`] for lighting point `from` returns world point `p` on
+    /// primitive `prim`; 0 when that primitive is not sampled. `sub` is the hit's
+    /// part (the triangle of a mesh).
+    pub fn pdf_area(&self, world: &World, prim: u32, sub: u32, p: DVec3, from: DVec3) -> f64 {
         let k = match self.index.get(prim as usize) {
             Some(&k) if k > 0 => k as usize - 1,
             _ => return 0.0,
         };
         let e = &self.list[k];
+        if let Some(cone) = e.ball.and_then(|(c, r)| Cone::new(c, r, from)) {
+            let n = (p - cone.centre).normalize_or_zero();
+            return self.pick_pdf(k) * cone.pdf_area(p, n, from);
+        }
         let pr = &world.primitives[prim as usize];
         let jac = match &pr.transform {
             None => 1.0,
@@ -249,6 +289,62 @@ impl Emitters {
             }
         };
         self.pick_pdf(k) / (e.area * jac)
+    }
+}
+
+/// The cone a sphere subtends from a point outside it, for sampling by solid angle.
+#[derive(Clone, Copy, Debug)]
+struct Cone {
+    centre: DVec3,
+    radius: f64,
+    from: DVec3,
+    /// Unit axis from `from` to the centre.
+    axis: DVec3,
+    dist: f64,
+    /// `1 - cos θmax`, computed stably.
+    one_minus_cos: f64,
+}
+
+impl Cone {
+    /// `None` when `from` is inside (or on) the sphere.
+    fn new(centre: DVec3, radius: f64, from: DVec3) -> Option<Cone> {
+        let to = centre - from;
+        let d2 = to.length_squared();
+        if d2 <= radius * radius * (1.0 + 1e-6) {
+            return None;
+        }
+        let dist = d2.sqrt();
+        let sin2 = radius * radius / d2;
+        let cos_max = (1.0 - sin2).max(0.0).sqrt();
+        Some(Cone {
+            centre,
+            radius,
+            from,
+            axis: to / dist,
+            dist,
+            one_minus_cos: sin2 / (1.0 + cos_max),
+        })
+    }
+
+    /// A point on the visible cap and its outward normal.
+    fn sample(&self, (u, v): (f64, f64)) -> (DVec3, DVec3) {
+        let cos_t = 1.0 - u * self.one_minus_cos;
+        let sin_t = (1.0 - cos_t * cos_t).max(0.0).sqrt();
+        let phi = 2.0 * PI * v;
+        let (t, b) = self.axis.any_orthonormal_pair();
+        let w = sin_t * phi.cos() * t + sin_t * phi.sin() * b + cos_t * self.axis;
+        let disc = self.radius * self.radius - self.dist * self.dist * sin_t * sin_t;
+        let along = self.dist * cos_t - disc.max(0.0).sqrt();
+        let p = self.from + along * w;
+        (p, (p - self.centre) / self.radius)
+    }
+
+    /// Density per unit area at `p` (normal `n`) of [`Cone::sample`].
+    fn pdf_area(&self, p: DVec3, n: DVec3, from: DVec3) -> f64 {
+        let to = p - from;
+        let d2 = to.length_squared();
+        let cos = n.dot(to).abs() / d2.sqrt();
+        cos / (2.0 * PI * self.one_minus_cos * d2)
     }
 }
 
@@ -420,6 +516,27 @@ mod tests {
         let total = f64::from(counts.iter().sum::<u32>());
         for (c, want) in counts.iter().zip([8.0 / 14.0, 4.0 / 14.0, 2.0 / 14.0]) {
             assert!((f64::from(*c) / total - want).abs() < 0.02, "{counts:?}");
+        }
+    }
+
+    #[test]
+    fn cone_samples_lie_on_the_near_cap_with_a_uniform_solid_angle_density() {
+        let c = Cone::new(DVec3::new(0.0, 3.0, 0.0), 1.0, DVec3::ZERO).unwrap();
+        // Solid angle of a unit sphere seen from distance 3: 2π(1 - cos θmax).
+        let omega = 2.0 * PI * (1.0 - (1.0f64 - 1.0 / 9.0).sqrt());
+        let n = 32;
+        for i in 0..n * n {
+            let (u, v) = (
+                (f64::from(i % n) + 0.5) / f64::from(n),
+                (f64::from(i / n) + 0.5) / f64::from(n),
+            );
+            let (p, nrm) = c.sample((u, v));
+            assert!(((p - c.centre).length() - 1.0).abs() < 1e-9);
+            assert!(nrm.dot(-p.normalize()) >= -1e-9, "on the far side: {p}");
+            // Back to solid angle: the same density everywhere in the cone.
+            let cos = nrm.dot(-p.normalize()).abs();
+            let solid = c.pdf_area(p, nrm, DVec3::ZERO) * p.length_squared() / cos;
+            assert!((solid * omega - 1.0).abs() < 1e-6, "{solid}");
         }
     }
 

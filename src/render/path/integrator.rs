@@ -120,7 +120,7 @@ pub fn radiance(
             let w = if prev_delta {
                 1.0
             } else {
-                let pa = sc.emitters.pdf_area(world, hit.prim, hit.sub, s.p);
+                let pa = sc.emitters.pdf_area(world, hit.prim, hit.sub, s.p, prev_p);
                 if pa > 0.0 {
                     let d2 = (s.p - prev_p).length_squared();
                     let cos = s.geo_normal.dot(wo).abs().max(1e-12);
@@ -163,7 +163,7 @@ pub fn radiance(
             if !sc.emitters.is_empty() {
                 let pick = sampler.next_f64();
                 let u = sampler.next_2d();
-                if let Some(ep) = sc.emitters.sample(world, pick, u) {
+                if let Some(ep) = sc.emitters.sample(world, s.p, pick, u) {
                     let to = ep.p - s.p;
                     let d2 = to.length_squared();
                     let dist = d2.sqrt();

@@ -155,7 +155,7 @@ pub fn filter_offset(filter: PixelFilter, (u, v): (f64, f64)) -> (f64, f64) {
 }
 
 /// Adds samples `accum.samples .. accum.samples + n` of every pixel of the
-/// accumulator's region to it. `progress`, when given, counts rows.
+/// accumulator's region to it. `progress`, when given, counts rows × samples.
 pub fn render_samples(
     sc: &PathScene,
     opts: &RenderOptions,
@@ -213,7 +213,7 @@ pub fn render_samples(
                 st.pixels += 1;
             }
             if let Some(p) = progress {
-                p.done.fetch_add(1, Ordering::Relaxed);
+                p.done.fetch_add(u64::from(n), Ordering::Relaxed);
             }
             st
         })
