@@ -464,12 +464,16 @@ fn denoise_film(film: &Film, albedo: &Film, normal: &Film) -> Result<Film, Strin
     };
     let (colour, alb, nrm) = (flat(film), flat(albedo), flat(normal));
     let mut outv = vec![0f32; colour.len()];
-    let device = oidn::Device::new();
-    oidn::RayTracing::new(&device)
+    let device =
+        oidn::Device::new().map_err(|e| format!("cannot start Open Image Denoise: {e:?}"))?;
+    let mut filter = oidn::RayTracing::try_new(&device)
+        .map_err(|e| format!("cannot make the denoising filter: {e:?}"))?;
+    filter
         .srgb(false)
         .hdr(true)
         .image_dimensions(film.width as usize, film.height as usize)
-        .albedo_normal(&alb, &nrm)
+        .albedo_normal(&alb, &nrm);
+    filter
         .filter(&colour, &mut outv)
         .map_err(|e| format!("denoising failed: {e:?}"))?;
     if let Err(e) = device.get_error() {
