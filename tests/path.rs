@@ -396,3 +396,75 @@ fn command_line_resume_equals_an_uninterrupted_render_and_writes_aovs() {
     run("classic.png", &["--integrator", "classic"]);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn looks_like_objects_show_the_light_and_the_light_does_the_lighting() {
+    let w = world(
+        "global_settings { assumed_gamma 1 }
+         camera { location <0, 1, -4> look_at <0, 1, 0> angle 30 }
+         plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+         light_source { <0, 1, 0> rgb 0.5
+           looks_like { sphere { 0, 0.3 pigment { rgb <1, 0.9, 0.8> } finish { ambient 1 diffuse 0 } } } }",
+    );
+    let po = PathOptions {
+        filter: PixelFilter::Box,
+        ..PathOptions::default()
+    };
+    let f = path::render(&w, &opts(15, 15), &Settings::default(), &po, 4).film;
+    // The stand-in shows its classic colour…
+    assert!(
+        (f.get(7, 7) - DVec3::new(1.0, 0.9, 0.8)).length() < 1e-9,
+        "{}",
+        f.get(7, 7)
+    );
+    // …and the floor below is lit by the point light, not by the sphere.
+    assert!(f.get(7, 14).x > 0.0);
+}
+
+#[test]
+fn command_line_time_limit_writes_a_checkpoint_and_denoise_needs_the_feature() {
+    let dir = std::env::temp_dir().join(format!("rts_path_tl_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene_path = dir.join("s.rts");
+    std::fs::write(&scene_path, SMALL_SCENE).unwrap();
+    let out = rts()
+        .arg("render")
+        .arg(&scene_path)
+        .arg("-o")
+        .arg(dir.join("t.png"))
+        .args([
+            "-W",
+            "8",
+            "-H",
+            "6",
+            "--time-limit",
+            "0.3s",
+            "--stats-json",
+            "-",
+            "-q",
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(dir.join("t.png").exists() && dir.join("t.png.ckpt").exists());
+    let stats: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(stats["integrator"], "path");
+    assert!(stats["sampling"]["samples"].as_u64().unwrap() >= 1);
+    if !cfg!(feature = "oidn") {
+        let st = rts()
+            .arg("render")
+            .arg(&scene_path)
+            .arg("-o")
+            .arg(dir.join("d.png"))
+            .args(["-W", "8", "-H", "6", "--spp", "1", "--denoise", "-q"])
+            .output()
+            .unwrap();
+        assert_eq!(st.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&st.stderr).contains("--features oidn"));
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
