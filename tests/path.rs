@@ -468,3 +468,40 @@ fn command_line_time_limit_writes_a_checkpoint_and_denoise_needs_the_feature() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn environment_sampling_is_unbiased_and_lowers_noise() {
+    // A bright band in the sky lights a diffuse ball and floor: the same picture on
+    // average with and without sampling the environment as a light, less noise with.
+    let w = world(
+        "global_settings { assumed_gamma 1 path_tracing { max_depth 4 } }
+         camera { location <0, 1.5, -4> look_at <0, 0.5, 0> angle 50 }
+         sky_sphere { pigment { gradient y color_map { [0 rgb 0.05] [0.8 rgb 0.05] [0.85 rgb 20] [0.9 rgb 0.05] [1 rgb 0.05] } } }
+         plane { y, 0 pigment { rgb 0.6 } finish { ambient 0 diffuse 1 } }
+         sphere { <0, 0.7, 0>, 0.7 pigment { rgb <0.8, 0.5, 0.3> } finish { ambient 0 diffuse 1 } }",
+    );
+    let o = opts(10, 8);
+    let s = Settings::default();
+    let po = PathOptions::default();
+    let with = PathScene::new(&w, po.max_depth);
+    assert!(with.env.is_some());
+    let mut without = PathScene::new(&w, po.max_depth);
+    without.env = None;
+    let crop = path::resolve_crop(&s, o.width, o.height);
+    let run = |sc: &PathScene, n: u32, seed: u64| {
+        let mut a = Accum::new(crop);
+        path::render_samples(sc, &o, &Settings { seed, ..s }, &po, &mut a, n, None);
+        a.film().pixels
+    };
+    let reference = run(&with, 2048, 7);
+    let mean = |v: &[DVec3]| v.iter().sum::<DVec3>() / v.len() as f64;
+    let (a, b) = (mean(&reference), mean(&run(&without, 2048, 8)));
+    assert!(
+        (a - b).abs().max_element() < 0.02 * a.max_element(),
+        "{a} vs {b}"
+    );
+    let e_with = rmse(&run(&with, 16, 1), &reference);
+    let e_without = rmse(&run(&without, 16, 1), &reference);
+    eprintln!("16 spp RMSE: {e_with} with environment sampling, {e_without} without");
+    assert!(e_with < e_without);
+}

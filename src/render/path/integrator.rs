@@ -5,6 +5,7 @@
 
 use super::bsdf::Bsdf;
 use super::emitters::Emitters;
+use super::environment::Environment;
 use super::lights;
 use crate::build::{Ray, RayKind, World};
 use crate::render::{sky, RayStats, Sampler};
@@ -23,6 +24,8 @@ pub struct PathScene<'a> {
     pub max_depth: u32,
     /// Whether any surface may let shadow rays through.
     pub clear: bool,
+    /// The environment as a sampled light (`None`: black or uniform).
+    pub env: Option<Environment>,
 }
 
 impl<'a> PathScene<'a> {
@@ -33,6 +36,7 @@ impl<'a> PathScene<'a> {
             emitters: Emitters::new(world),
             max_depth: max_depth.max(1),
             clear: lights::any_transparent(world),
+            env: Environment::new(world),
         }
     }
 }
@@ -81,7 +85,11 @@ pub fn radiance(
     loop {
         let Some(hit) = world.intersect(&ray, t_min, f64::INFINITY, kind) else {
             let env = sky(world, ray.dir);
-            out.radiance += beta * env;
+            let w = match &sc.env {
+                Some(e) if !prev_delta => power(prev_pdf, e.pdf(ray.dir)),
+                _ => 1.0,
+            };
+            out.radiance += beta * w * env;
             if first {
                 out.albedo = env;
             }
@@ -159,6 +167,25 @@ pub fn radiance(
                     )
                 };
                 out.radiance += beta * f * ls.li * vis;
+            }
+            if let Some(env) = &sc.env {
+                let (wi, pdf_e) = env.sample(sampler.next_2d());
+                let (f, pdf_b) = bsdf.eval(wo, wi);
+                if f.max_element() > 0.0 && pdf_e > 0.0 {
+                    let vis = lights::transmittance(
+                        world,
+                        sc.clear,
+                        s.p,
+                        s.geo_normal,
+                        wi,
+                        f64::INFINITY,
+                        &mut stats.shadow,
+                    );
+                    if vis.max_element() > 0.0 {
+                        out.radiance +=
+                            beta * f * sky(world, wi) * vis * power(pdf_e, pdf_b) / pdf_e;
+                    }
+                }
             }
             if !sc.emitters.is_empty() {
                 let pick = sampler.next_f64();

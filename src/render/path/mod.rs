@@ -12,11 +12,13 @@
 mod bsdf;
 pub mod checkpoint;
 mod emitters;
+mod environment;
 mod integrator;
 mod lights;
 
 pub use bsdf::{ggx_alpha, highlight, Bsdf, BsdfSample};
 pub use emitters::Emitters;
+pub use environment::Environment;
 pub use integrator::{radiance, PathSample, PathScene};
 
 use super::{primary_ray, Crop, Film, Progress, RenderOptions, RenderStats, Sampler, Settings};
