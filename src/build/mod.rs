@@ -83,7 +83,22 @@ pub struct World {
 /// become one CSG primitive each; every distinct mesh gets one hierarchy, shared
 /// by all objects that use it (instances).
 pub fn build(scene: &Scene) -> World {
-    let mut b = Builder::default();
+    build_cached(scene, &mut BuildCache::default())
+}
+
+/// Mesh hierarchies kept from one build to the next (the frames of an animation):
+/// a mesh that is the same `Arc` as in the previous build keeps its BVH.
+#[derive(Default)]
+pub struct BuildCache {
+    meshes: FxHashMap<usize, Arc<MeshAccel>>,
+}
+
+/// [`build`], reusing the mesh hierarchies of the previous build in `cache`.
+pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
+    let mut b = Builder {
+        previous: std::mem::take(&mut cache.meshes),
+        ..Builder::default()
+    };
     let default_texture = Arc::new(Texture::default());
     let inherited = Inherited {
         texture: default_texture,
@@ -95,6 +110,11 @@ pub fn build(scene: &Scene) -> World {
         b.flatten(obj, None, &inherited);
     }
     let mut prims = b.prims;
+    cache.meshes = b
+        .meshes
+        .iter()
+        .map(|(k, v)| (*k as usize, v.clone()))
+        .collect();
     // Bounded first keeps BVH indices dense; order is otherwise file order.
     prims.sort_by_key(|p: &Primitive| p.bounds.is_none());
     let items: Vec<(u32, Aabb)> = prims
@@ -143,13 +163,20 @@ fn or_flags(a: ObjectFlags, b: ObjectFlags) -> ObjectFlags {
 struct Builder {
     prims: Vec<Primitive>,
     meshes: FxHashMap<*const MeshData, Arc<MeshAccel>>,
+    /// Hierarchies of the previous build, by mesh address.
+    previous: FxHashMap<usize, Arc<MeshAccel>>,
 }
 
 impl Builder {
     fn mesh(&mut self, m: &Arc<MeshData>) -> Arc<MeshAccel> {
         self.meshes
             .entry(Arc::as_ptr(m))
-            .or_insert_with(|| Arc::new(MeshAccel::new(m.clone())))
+            .or_insert_with(|| {
+                self.previous
+                    .get(&(Arc::as_ptr(m) as usize))
+                    .cloned()
+                    .unwrap_or_else(|| Arc::new(MeshAccel::new(m.clone())))
+            })
             .clone()
     }
 
@@ -543,6 +570,36 @@ impl World {
             (!found).then_some(t_max)
         });
         found
+    }
+
+    /// [`World::occluded`] that first tests primitive `hint` (any index; ones out
+    /// of range are skipped) and leaves in `hint` the primitive that blocked the
+    /// ray. The answer does not depend on `hint`, only the time it takes.
+    pub fn occluded_hinted(&self, ray: &Ray, t_min: f64, t_max: f64, hint: &mut u32) -> bool {
+        let kind = RayKind::Shadow;
+        let hit_by = |i: u32| {
+            let p = &self.primitives[i as usize];
+            kind.sees(&p.flags) && p.intersect(ray, t_min, t_max).is_some()
+        };
+        if (*hint as usize) < self.primitives.len() && hit_by(*hint) {
+            return true;
+        }
+        if let Some(&i) = self.unbounded.iter().find(|&&i| hit_by(i)) {
+            *hint = i;
+            return true;
+        }
+        let mut found = None;
+        self.bvh.traverse(ray, t_min, t_max, |i, t_max| {
+            if hit_by(i) {
+                found = Some(i);
+                return None;
+            }
+            Some(t_max)
+        });
+        if let Some(i) = found {
+            *hint = i;
+        }
+        found.is_some()
     }
 
     /// Whether world point `p` is inside any object, by POV-Ray's rules (see

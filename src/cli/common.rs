@@ -12,8 +12,6 @@ use std::path::Path;
 pub struct Loaded {
     /// All files read.
     pub sources: SourceMap,
-    /// The scene, when evaluation found no error.
-    pub scene: Option<Scene>,
     /// Every diagnostic.
     pub diagnostics: Vec<Diagnostic>,
 }
@@ -41,7 +39,8 @@ pub fn eval_options(args: &SceneArgs, width: u32, height: u32) -> Result<EvalOpt
             unrestricted: args.allow_any_path,
         },
         defines,
-        clock: args.clock,
+        clock: args.clock.unwrap_or(0.0),
+        clock_on: args.clock.is_some(),
         image_width: f64::from(width),
         image_height: f64::from(height),
         max_loop_iterations: args.max_loop_iterations,
@@ -51,36 +50,74 @@ pub fn eval_options(args: &SceneArgs, width: u32, height: u32) -> Result<EvalOpt
     })
 }
 
-/// Reads, parses and evaluates `path`. `Err` when the file cannot be read at all.
-pub fn load(path: &Path, options: &EvalOptions) -> Result<Loaded, String> {
+/// A scene file read and parsed once, ready to be evaluated for any number of
+/// frames.
+pub struct Parsed {
+    /// All files read (the scene, then includes as evaluation finds them).
+    pub sources: SourceMap,
+    /// The scene file's id.
+    pub id: rts::span::FileId,
+    /// The syntax tree, when the file parsed without errors.
+    pub file: Option<rts::syntax::ast::File>,
+    /// Syntax diagnostics.
+    pub diagnostics: Vec<Diagnostic>,
+    /// What one evaluation keeps for the next (includes, meshes).
+    pub cache: eval::EvalCache,
+}
+
+/// Reads and parses `path`. `Err` when the file cannot be read at all.
+pub fn parse(path: &Path) -> Result<Parsed, String> {
     let mut sources = SourceMap::new();
     let name = path.display().to_string();
     let id = match eval::load_file(&mut sources, path, name) {
         Ok(id) => id,
         Err(eval::LoadError::Io(e)) => return Err(format!("cannot read {}: {e}", path.display())),
         Err(eval::LoadError::Utf8(d)) => {
-            return Ok(Loaded {
+            let id = rts::span::FileId(0);
+            return Ok(Parsed {
                 sources,
-                scene: None,
+                id,
+                file: None,
                 diagnostics: vec![*d],
-            })
+                cache: eval::EvalCache::default(),
+            });
         }
     };
     let text = sources.get(id).text.clone();
-    let (file, mut diagnostics) = rts::syntax::parse(&text, id);
-    if rts::diag::has_errors(&diagnostics) {
-        return Ok(Loaded {
-            sources,
-            scene: None,
-            diagnostics,
-        });
-    }
-    let evaluated = eval::eval(&file, id, &mut sources, options);
-    diagnostics.extend(evaluated.diagnostics);
-    let scene = (!rts::diag::has_errors(&diagnostics)).then_some(evaluated.scene);
-    Ok(Loaded {
+    let (file, diagnostics) = rts::syntax::parse(&text, id);
+    let file = (!rts::diag::has_errors(&diagnostics)).then_some(file);
+    Ok(Parsed {
         sources,
-        scene,
+        id,
+        file,
+        diagnostics,
+        cache: eval::EvalCache::default(),
+    })
+}
+
+impl Parsed {
+    /// Evaluates the scene with `options`: the scene when there was no error, and
+    /// the evaluation's diagnostics.
+    pub fn eval(&mut self, options: &EvalOptions) -> (Option<Scene>, Vec<Diagnostic>) {
+        let Some(file) = &self.file else {
+            return (None, Vec::new());
+        };
+        let evaluated =
+            eval::eval_cached(file, self.id, &mut self.sources, options, &mut self.cache);
+        let scene = (!rts::diag::has_errors(&evaluated.diagnostics)).then_some(evaluated.scene);
+        (scene, evaluated.diagnostics)
+    }
+}
+
+/// Reads, parses and evaluates `path`. `Err` when the file cannot be read at all.
+pub fn load(path: &Path, options: &EvalOptions) -> Result<Loaded, String> {
+    let mut parsed = parse(path)?;
+    let (scene, diags) = parsed.eval(options);
+    let mut diagnostics = std::mem::take(&mut parsed.diagnostics);
+    diagnostics.extend(diags);
+    let _ = scene;
+    Ok(Loaded {
+        sources: parsed.sources,
         diagnostics,
     })
 }

@@ -1,9 +1,13 @@
 //! The command line: `rts render`, `rts check`. One file per subcommand.
 
+mod assemble;
 mod check;
 mod common;
+mod frame;
+mod manifest;
 mod path_opts;
 mod render;
+mod sequence;
 mod stats;
 
 use clap::{Parser, Subcommand, ValueEnum};
@@ -64,9 +68,9 @@ pub struct SceneArgs {
     /// Refuse arrays with more elements than this.
     #[arg(long, value_name = "N", default_value_t = 1 << 22)]
     pub max_array_size: usize,
-    /// Animation clock value (`clock` in the scene).
-    #[arg(long, value_name = "T", default_value_t = 0.0)]
-    pub clock: f64,
+    /// Evaluate (and render) the scene as a still at this `clock` value.
+    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    pub clock: Option<f64>,
 }
 
 /// The subcommands.

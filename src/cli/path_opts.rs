@@ -193,6 +193,7 @@ pub fn wanted(args: &RenderArgs, scene: &Scene) -> bool {
 pub fn run(
     args: &RenderArgs,
     scene: &Scene,
+    (width, height): (u32, u32),
     output: &Path,
     format: Format,
     settings: &Settings,
@@ -223,10 +224,7 @@ pub fn run(
     if p.denoise && !cfg!(feature = "oidn") {
         return fail("--denoise needs rts built with `--features oidn` (and Intel Open Image Denoise installed); see docs/pathtracing.md".into());
     }
-    let opts = RenderOptions {
-        width: args.width,
-        height: args.height,
-    };
+    let opts = RenderOptions { width, height };
     let out = OutputOptions {
         gamma: args.gamma,
         bit_depth: if args.bit_depth == 16 {
@@ -238,7 +236,7 @@ pub fn run(
     };
     let crop = resolve_crop(settings, opts.width, opts.height);
     let mut fp_text = std::fs::read(&args.scene_file).unwrap_or_default();
-    fp_text.extend(format!("{:?}{}", args.scene.define, args.scene.clock).bytes());
+    fp_text.extend(format!("{:?}{:?}", args.scene.define, args.scene.clock).bytes());
     let key = checkpoint::Key::new(
         &opts,
         settings,
@@ -344,8 +342,8 @@ pub fn run(
     let report = stats::Report {
         output,
         format,
-        width: args.width,
-        height: args.height,
+        width,
+        height,
         settings: &shown,
         threads,
         objects: scene.objects.len(),
@@ -385,6 +383,45 @@ pub fn run(
         }
     }
     Some(EXIT_OK)
+}
+
+/// One picture of a sequence or one instant of motion blur (`instants` of them
+/// share the samples): the path tracer when it is wanted, else the classic
+/// renderer. Sequences get no checkpoints or AOVs.
+pub fn render_frame(
+    args: &RenderArgs,
+    scene: &Scene,
+    world: &rts::build::World,
+    opts: &RenderOptions,
+    settings: &Settings,
+    instants: usize,
+    progress: &Progress,
+) -> rts::render::Rendered {
+    if !wanted(args, scene) {
+        return rts::render::render_with(world, opts, settings, Some(progress));
+    }
+    let base = scene.global.path_tracing.unwrap_or_default();
+    let mut p = args.path.clone();
+    if p.spp.is_none() {
+        p.spp = args.samples;
+    }
+    let (popts, spp) = match plan(&p, Some(&base), Path::new("frame")) {
+        Ok(pl) => (pl.popts, pl.spp.min(MAX_SPP)),
+        Err(_) => (PathOptions::from(&base), base.samples),
+    };
+    let spp = spp.div_ceil(instants.max(1) as u32).max(1);
+    let sc = PathScene::new(world, popts.max_depth);
+    let mut acc = Accum::new(resolve_crop(settings, opts.width, opts.height));
+    let rows = u64::from(acc.crop.y1 - acc.crop.y0);
+    progress
+        .total
+        .store(rows * u64::from(spp), Ordering::Relaxed);
+    progress.done.store(0, Ordering::Relaxed);
+    let stats = render_samples(&sc, opts, settings, &popts, &mut acc, spp, Some(progress));
+    rts::render::Rendered {
+        film: acc.film(),
+        stats,
+    }
 }
 
 /// Adds samples pass by pass until the plan's total or time limit, writing the

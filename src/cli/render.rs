@@ -1,8 +1,9 @@
 //! `rts render SCENE [-o OUT] [options]`: see docs/cli.md for every option.
 
-use super::{common, stats, SceneArgs, EXIT_ERRORS, EXIT_OK, EXIT_USAGE};
-use rts::output::{BitDepth, Format, Gamma, OutputOptions};
-use rts::render::{Antialias, Crop, Pass, Progress, RenderOptions, Sampling, Settings};
+use super::frame::Renderer;
+use super::{common, sequence, stats, SceneArgs, EXIT_ERRORS, EXIT_OK, EXIT_USAGE};
+use rts::output::{Format, Gamma};
+use rts::render::{Antialias, Crop, Pass, Sampling, Settings};
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -70,9 +71,48 @@ pub struct RenderArgs {
     /// Seed of every random number (jitter, sample positions).
     #[arg(long, value_name = "N", default_value_t = 0)]
     pub seed: u64,
-    /// Animation frame number (keys the random numbers with the seed).
-    #[arg(long, value_name = "N", default_value_t = 0)]
-    pub frame: u32,
+    /// Render frame N of the timeline as a still (its clock, frame_number and
+    /// random numbers); a `#` run in -o becomes the frame number.
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    pub frame: Option<i64>,
+    /// Frames to render, `A..B` (both included): a part of the scene's
+    /// `animation { }` timeline, or the timeline itself (clock 0 to 1) when the
+    /// scene has none.
+    #[arg(long, value_name = "A..B")]
+    pub frames: Option<String>,
+    /// Frames per second (overrides the scene's `animation { fps }`; default 24).
+    #[arg(long, value_name = "F")]
+    pub fps: Option<f64>,
+    /// Cyclic animation (POV-Ray's +KC): the last frame stops one step before the
+    /// first comes round again.
+    #[arg(long)]
+    pub cyclic: bool,
+    /// Re-render every frame of a sequence, even those already complete.
+    #[arg(long)]
+    pub force: bool,
+    /// Render only part I of N of a sequence (I from 1 to N; frames dealt out in
+    /// turn), so N machines together render every frame once.
+    #[arg(long, value_name = "I/N")]
+    pub shard: Option<String>,
+    /// After a sequence, assemble its frames into an animated GIF.
+    #[arg(long, value_name = "OUT.gif")]
+    pub gif: Option<PathBuf>,
+    /// After a sequence, assemble its frames into an animated PNG.
+    #[arg(long, value_name = "OUT.png")]
+    pub apng: Option<PathBuf>,
+    /// After a sequence, assemble its frames into an MP4 with ffmpeg (when installed).
+    #[arg(long, value_name = "OUT.mp4")]
+    pub mp4: Option<PathBuf>,
+    /// Quick look: half the width and height, one ray per pixel, no motion blur.
+    #[arg(long)]
+    pub preview: bool,
+    /// Motion blur: keep the shutter open for this fraction of a frame (0 to 1),
+    /// averaging the scene at several instants (overrides `animation { motion_blur }`).
+    #[arg(long, value_name = "SHUTTER")]
+    pub motion_blur: Option<f64>,
+    /// Instants averaged for motion blur (default 8).
+    #[arg(long, value_name = "N")]
+    pub motion_samples: Option<u32>,
     /// Render only the pixels X0..X1 × Y0..Y1 (0-based, ends excluded, top-left
     /// origin); the output image has the region's size.
     #[arg(long, value_name = "X0,Y0,X1,Y1")]
@@ -189,7 +229,7 @@ fn settings(args: &RenderArgs) -> Result<Settings, String> {
         crop,
         pass,
         seed: args.seed,
-        frame: args.frame,
+        frame: 0,
     })
 }
 
@@ -217,7 +257,7 @@ fn output_target(args: &RenderArgs) -> Result<(PathBuf, Format), String> {
     }
 }
 
-/// Renders the scene.
+/// Renders the scene: a still, or the frames of its timeline.
 pub fn run(args: &RenderArgs) -> i32 {
     let t_start = Instant::now();
     if args.width == 0
@@ -235,114 +275,177 @@ pub fn run(args: &RenderArgs) -> i32 {
     if args.bit_depth != 8 && args.bit_depth != 16 {
         return usage("--bit-depth must be 8 or 16");
     }
-    let (output, format) = match output_target(args) {
-        Ok(t) => t,
-        Err(e) => return usage(e),
+    if args.preview && args.crop.is_some() {
+        return usage("--preview and --crop cannot be used together");
+    }
+    let (width, height) = if args.preview {
+        ((args.width / 2).max(1), (args.height / 2).max(1))
+    } else {
+        (args.width, args.height)
     };
-    let settings = match settings(args) {
+    let mut settings = match settings(args) {
         Ok(s) => s,
         Err(e) => return usage(e),
     };
-    let options = match common::eval_options(&args.scene, args.width, args.height) {
+    if args.preview {
+        settings.sampling = Sampling::Centre;
+    }
+    let base = match common::eval_options(&args.scene, width, height) {
         Ok(o) => o,
         Err(e) => return usage(e),
     };
+    let plan = match sequence::Plan::from_args(args) {
+        Ok(p) => p,
+        Err(e) => return usage(e),
+    };
     let t0 = Instant::now();
-    let loaded = match common::load(&args.scene_file, &options) {
-        Ok(l) => l,
+    let mut parsed = match common::parse(&args.scene_file) {
+        Ok(p) => p,
         Err(e) => {
             eprintln!("error: {e}");
             return EXIT_ERRORS;
         }
     };
     common::print(
-        &loaded.diagnostics,
-        &loaded.sources,
+        &parsed.diagnostics,
+        &parsed.sources,
         args.scene.message_format,
     );
-    let Some(scene) = loaded.scene else {
+    if parsed.file.is_none() || rts::diag::has_errors(&parsed.diagnostics) {
+        return EXIT_ERRORS;
+    }
+    // The first evaluation finds the scene's own timeline.
+    let (probe, diags) = parsed.eval(&base);
+    let timeline = probe
+        .as_ref()
+        .and_then(|p| plan.timeline(p.animation.clone()));
+    // With a timeline the scene is evaluated again for its frames, whose
+    // diagnostics are shown instead (unless this evaluation already failed).
+    let quiet_probe = timeline.is_some() && probe.is_some();
+    if !quiet_probe {
+        common::print(&diags, &parsed.sources, args.scene.message_format);
+    }
+    let Some(probe) = probe else {
         return EXIT_ERRORS;
     };
-    let t_parse = t0.elapsed();
-    if let Some(status) =
-        super::path_opts::run(args, &scene, &output, format, &settings, t_start, t_parse)
-    {
-        return status;
-    }
-    let progress = Progress::default();
-    let show_progress = !args.quiet && stats::stderr_is_terminal();
-    let job = || {
-        let t1 = Instant::now();
-        let world = rts::build::build(&scene);
-        let t_build = t1.elapsed();
-        let t2 = Instant::now();
-        let done = std::sync::atomic::AtomicBool::new(false);
-        let rendered = std::thread::scope(|s| {
-            if show_progress {
-                s.spawn(|| stats::progress_bar(&progress, &done));
-            }
-            let r = rts::render::render_with(
-                &world,
-                &RenderOptions {
-                    width: args.width,
-                    height: args.height,
-                },
-                &settings,
-                Some(&progress),
-            );
-            done.store(true, std::sync::atomic::Ordering::Relaxed);
-            r
-        });
-        (
-            rendered,
-            t_build,
-            t2.elapsed(),
-            world.global.assumed_gamma,
-            rayon::current_num_threads(),
-        )
-    };
-    let (rendered, t_build, t_render, assumed_gamma, threads) = match args.threads {
+    let t_probe = t0.elapsed();
+    let pool = match args.threads {
         Some(n) => match rayon::ThreadPoolBuilder::new()
             .num_threads(n.max(1))
             .build()
         {
-            Ok(pool) => pool.install(job),
+            Ok(pool) => Some(pool),
             Err(e) => {
                 eprintln!("error: cannot start {n} threads: {e}");
                 return EXIT_ERRORS;
             }
         },
-        None => job(),
+        None => None,
     };
-    let data = settings.pass.is_data();
-    let out = OutputOptions {
-        gamma: if data { Gamma::Power(1.0) } else { args.gamma },
-        bit_depth: if args.bit_depth == 16 {
-            BitDepth::Sixteen
-        } else {
-            BitDepth::Eight
-        },
-        assumed_gamma: if data { None } else { assumed_gamma },
+    let mut r = Renderer::new(args, settings, (width, height), pool);
+    // A plain `-o file.png` (no `#` run) asks for one picture: the first frame of
+    // the timeline unless --frame or --clock says which.
+    let plain_output = args
+        .output
+        .as_ref()
+        .is_some_and(|p| !p.to_string_lossy().contains('#'));
+    let wants_sequence = args.frames.is_some()
+        || args.gif.is_some()
+        || args.apng.is_some()
+        || args.mp4.is_some()
+        || args.shard.is_some();
+    let still = args.scene.clock.is_some()
+        || args.frame.is_some()
+        || timeline.is_none()
+        || (plain_output && !wants_sequence);
+    if !still {
+        if let Some(tl) = timeline {
+            return sequence::run(&mut r, &mut parsed, &base, &plan, tl, t_start);
+        }
+    }
+    let path_traced = super::path_opts::wanted(args, &probe);
+    // A still: at --clock, at --frame's time, or the scene as first evaluated.
+    let (instants, first, frame_no) = match (&timeline, args.frame) {
+        (Some(tl), Some(n)) => (
+            sequence::instants(&base, tl, n, plan.blur(tl), args.preview),
+            None,
+            n,
+        ),
+        (Some(tl), None) if args.scene.clock.is_none() => (
+            sequence::instants(&base, tl, tl.initial_frame, plan.blur(tl), args.preview),
+            None,
+            tl.initial_frame,
+        ),
+        (Some(tl), None) => {
+            let mut o = sequence::frame_options(&base, tl, 0);
+            o.clock = base.clock;
+            o.clock_on = base.clock_on;
+            o.frame_number = 0.0;
+            (vec![o], None, 0)
+        }
+        // --frame without a timeline: that frame_number, POV-Ray's single frame.
+        (None, Some(n)) => (
+            sequence::instants(&base, &rts::scene::Timeline::default(), n, None, false),
+            None,
+            n,
+        ),
+        (None, None) => (vec![base.clone()], Some(probe), 0),
     };
+    let (output, format) = match output_target(args) {
+        Ok((p, f)) => (sequence::frame_path(&p, frame_no), f),
+        Err(e) => return usage(e),
+    };
+    let t_parse = t_probe;
+    if path_traced && instants.len() == 1 {
+        // Progressive path tracing of a still (checkpoints, --time-limit, AOVs).
+        let scene = match first {
+            Some(s) => s,
+            None => match parsed.eval(&instants[0]) {
+                (Some(s), d) if !rts::diag::has_errors(&d) => s,
+                (_, d) => {
+                    common::print(&d, &parsed.sources, args.scene.message_format);
+                    return EXIT_ERRORS;
+                }
+            },
+        };
+        let settings = Settings {
+            frame: frame_no as u32,
+            ..r.settings
+        };
+        let size = (width, height);
+        return super::path_opts::run(
+            args, &scene, size, &output, format, &settings, t_start, t_parse,
+        )
+        .unwrap_or(EXIT_OK);
+    }
+    let img = match r.image(&mut parsed, &instants, first, frame_no as u32) {
+        Ok(i) => i,
+        Err(code) => return code,
+    };
+    let out = r.output_options(img.assumed_gamma);
     let t3 = Instant::now();
-    if let Err(e) = rts::output::write_as(&rendered.film, &output, format, &out) {
+    if let Err(e) = rts::output::write_as(&img.film, &output, format, &out) {
         eprintln!("error: {e}");
         return EXIT_ERRORS;
     }
+    let settings = Settings {
+        frame: frame_no as u32,
+        ..r.settings
+    };
     let report = stats::Report {
         output: &output,
         format,
-        width: args.width,
-        height: args.height,
+        width,
+        height,
         settings: &settings,
-        threads,
-        objects: scene.objects.len(),
-        lights: scene.lights.len(),
-        stats: rendered.stats,
+        threads: r.threads(),
+        objects: img.objects,
+        lights: img.lights,
+        stats: img.stats,
         times: stats::Times {
-            parse_eval: t_parse,
-            build: t_build,
-            render: t_render,
+            parse_eval: t_parse + img.t_eval,
+            build: img.t_build,
+            render: img.t_render,
             write: t3.elapsed(),
             total: t_start.elapsed(),
         },

@@ -96,3 +96,9 @@ pub const NO_GAMMA: &str = "rts::lint::assumed_gamma_missing";
 pub const NO_LIGHTS: &str = "rts::lint::no_lights";
 /// A deprecated or ignored construct (warning).
 pub const IGNORED: &str = "rts::lint::ignored";
+/// Keyframe times that do not increase.
+pub const KEYS_OUT_OF_ORDER: &str = "rts::anim::keys_out_of_order";
+/// Keys of one `keyframes` holding different kinds of value.
+pub const KEY_MIXED_TYPES: &str = "rts::anim::mixed_key_types";
+/// A key outside the timeline's clock range (warning).
+pub const KEY_OUTSIDE_TIMELINE: &str = "rts::anim::key_outside_timeline";

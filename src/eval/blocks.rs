@@ -55,6 +55,10 @@ const BLOCKS: &[&str] = &[
     "sky_sphere",
     "fog",
     "looks_like",
+    "spline",
+    "keyframes",
+    "animation",
+    "camera_path",
     "path_tracing",
 ];
 
@@ -78,7 +82,6 @@ const LATER_BLOCKS: &[&str] = &[
     "media",
     "photons",
     "radiosity",
-    "spline",
     "light_group",
 ];
 
@@ -112,6 +115,10 @@ impl Evaluator<'_> {
             };
             return Err(d.into());
         }
+        if kw == "camera_path" {
+            // Its keyframes stay curves: it reads its items itself.
+            return self.camera_path(b).map(Some);
+        }
         let mut toks = Sink::new();
         self.expand(&b.items, &mut toks);
         let mut c = Cursor::new(toks.toks, kw, b.span);
@@ -140,6 +147,13 @@ impl Evaluator<'_> {
             "light_source" => Value::Light(std::sync::Arc::new(self.light(&mut c)?)),
             "transform" => Value::Transform(std::sync::Arc::new(self.transform_block(&mut c)?)),
             "looks_like" => Value::Object(std::sync::Arc::new(self.looks_like(&mut c)?)),
+            "spline" => self.spline_block(&mut c)?,
+            "keyframes" => self.keyframes_block(&mut c)?,
+            "camera_path" => unreachable!("read above"),
+            "animation" => {
+                self.animation_block(&mut c)?;
+                return Ok(None);
+            }
             "sky_sphere" => {
                 self.sky_sphere(&mut c)?;
                 return Ok(None);

@@ -145,22 +145,47 @@ impl Evaluator<'_> {
                     c.once("blur_samples", span)?;
                     let (v, s) = c.value("the number of blur samples per pixel")?;
                     let mut n = self.to_float(&v, s)?;
+                    let mut min = 1.0;
                     c.comma();
                     if c.value_next() {
-                        // `blur_samples MIN, MAX`: rts takes MAX samples.
+                        // `blur_samples MIN, MAX`.
+                        min = n;
                         n = self.take_float(c, "the maximum number of blur samples")?;
                     }
                     if !(1.0..=4096.0).contains(&n) {
                         return_range(s, format!("`blur_samples` must be from 1 to 4096, found {n}"))
+                    } else if !(1.0..=n).contains(&min) {
+                        return_range(
+                            s,
+                            format!("the minimum of `blur_samples MIN, MAX` must be from 1 to MAX ({n}), found {min}"),
+                        )
                     } else {
                         cam.blur_samples = n as u32;
+                        cam.blur_min_samples = min as u32;
                         Ok(())
                     }
                 }
-                Tok::Kw(kw @ ("confidence" | "variance"), span) => {
-                    // POV-Ray's adaptive blur stopping rule: rts takes all blur_samples.
-                    c.once(kw, span)?;
-                    self.take_float(c, &format!("a number after `{kw}`")).map(|_| ())
+                Tok::Kw("confidence", span) => {
+                    c.once("confidence", span)?;
+                    let (v, s) = c.value("a probability after `confidence`")?;
+                    let p = self.to_float(&v, s)?;
+                    if !(0.0..1.0).contains(&p) {
+                        return_range(s, format!("`confidence` must be from 0 to below 1, found {p}"))
+                    } else {
+                        cam.confidence = p;
+                        Ok(())
+                    }
+                }
+                Tok::Kw("variance", span) => {
+                    c.once("variance", span)?;
+                    let (v, s) = c.value("a number after `variance`")?;
+                    let x = self.to_float(&v, s)?;
+                    if x < 0.0 {
+                        return_range(s, format!("`variance` must not be negative, found {x}"))
+                    } else {
+                        cam.variance = x;
+                        Ok(())
+                    }
                 }
                 Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => {
                     self.transform_kw(kw, span, c).map(|t| {
@@ -316,6 +341,9 @@ impl Evaluator<'_> {
             aperture: spec.aperture,
             focal_distance: 1.0,
             blur_samples: spec.blur_samples,
+            blur_min_samples: spec.blur_min_samples,
+            confidence: spec.confidence,
+            variance: spec.variance,
             span,
         };
         if let Some(t) = spec.transform {

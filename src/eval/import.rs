@@ -23,9 +23,12 @@ impl Evaluator<'_> {
     /// `obj_file "NAME"` inside a mesh: the triangles of a Wavefront OBJ file (all
     /// its objects; polygons are triangulated; normals and uvs kept; materials
     /// ignored).
-    pub(crate) fn obj_mesh(&mut self, c: &mut Cursor) -> R<MeshData> {
+    pub(crate) fn obj_mesh(&mut self, c: &mut Cursor) -> R<Arc<MeshData>> {
         let (name, span) = self.file_name(c, "the OBJ file's name")?;
         let path = self.data_file(&name, span, "OBJ file")?;
+        if let Some(m) = self.mesh_cache.file(&path) {
+            return Ok(m);
+        }
         let bad = |e: String| -> super::Fail {
             Diagnostic::error(
                 codes::FILE_NOT_FOUND,
@@ -89,17 +92,20 @@ impl Evaluator<'_> {
         if m.triangles.is_empty() {
             return Err(bad("the file has no faces".into()));
         }
-        Ok(m)
+        Ok(self.mesh_cache.store_file(&path, m))
     }
 
     /// `ply_file "NAME"` inside a mesh: the `vertex` (x, y, z [, nx, ny, nz]) and
     /// `face` (vertex_indices or vertex_index lists, fanned into triangles)
     /// elements of a PLY file, ASCII or binary.
-    pub(crate) fn ply_mesh(&mut self, c: &mut Cursor) -> R<MeshData> {
+    pub(crate) fn ply_mesh(&mut self, c: &mut Cursor) -> R<Arc<MeshData>> {
         use ply_rs_bw::parser::Parser;
         use ply_rs_bw::ply::DefaultElement;
         let (name, span) = self.file_name(c, "the PLY file's name")?;
         let path = self.data_file(&name, span, "PLY file")?;
+        if let Some(m) = self.mesh_cache.file(&path) {
+            return Ok(m);
+        }
         let bad = |e: String| -> super::Fail {
             Diagnostic::error(
                 codes::FILE_NOT_FOUND,
@@ -154,7 +160,7 @@ impl Evaluator<'_> {
         if m.triangles.is_empty() {
             return Err(bad("the file has no faces".into()));
         }
-        Ok(m)
+        Ok(self.mesh_cache.store_file(&path, m))
     }
 
     /// `height_field { png "NAME" [smooth] [water_level W] … }`: the image's grey

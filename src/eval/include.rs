@@ -177,7 +177,10 @@ impl Evaluator<'_> {
     pub(crate) fn data_file(&self, name: &str, span: Span, what: &str) -> R<PathBuf> {
         let mut tried = Vec::new();
         match self.search(name, span, &mut tried)? {
-            Some((canon, _)) => Ok(canon),
+            Some((canon, _)) => {
+                self.data_files.borrow_mut().push(canon.clone());
+                Ok(canon)
+            }
             None => Err(Diagnostic::error(
                 codes::FILE_NOT_FOUND,
                 span,

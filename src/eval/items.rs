@@ -41,6 +41,8 @@ impl Evaluator<'_> {
                 }
             }
             Item::Block(b) => match self.block(b) {
+                // `keyframes { }` stands for its value at the current time.
+                Ok(Some(v)) if b.keyword.name == "keyframes" => out.push(Tok::Val(v, b.span)),
                 Ok(Some(v)) => out.push(Tok::Block(b.keyword.name, v, b.span)),
                 Ok(None) => {}
                 Err(f) => {
@@ -296,6 +298,17 @@ impl Evaluator<'_> {
                 .with_label(format!("first item: {}", t.describe()))
                 .into()),
             };
+        }
+        if let Some(Value::Spline(s)) = self.scope.get(name).map(|b| b.value.clone()) {
+            let mut vals = Vec::with_capacity(args.len());
+            for a in args {
+                match a {
+                    Arg::Expr(e) => vals.push((self.expr(e)?, e.span)),
+                    Arg::Block(b) => vals.push((self.block_value(b)?, b.span)),
+                    Arg::Empty(s) => vals.push((Value::Poison, *s)),
+                }
+            }
+            return self.call_spline(&s, &vals, span);
         }
         match self.scope.get(name).map(|b| &b.value) {
             Some(Value::Poison) => Err(Fail::silent()),

@@ -83,16 +83,20 @@ impl Evaluator<'_> {
                         .with_help("put the file's mesh and the other triangles in separate meshes")
                         .into());
                     }
-                    let mut data = if kw == "obj_file" {
+                    // Read once per file (and kept from frame to frame).
+                    let data = if kw == "obj_file" {
                         self.obj_mesh(c)?
                     } else {
                         self.ply_mesh(c)?
                     };
                     if let Some(Tok::Kw("inside_vector", _)) = c.peek() {
                         c.next();
-                        data.inside_vector = Some(self.inside_vector(c)?);
+                        let mut d = (*data).clone();
+                        d.inside_vector = Some(self.inside_vector(c)?);
+                        let d = self.mesh_cache.intern(d);
+                        return Ok(Object::new(Shape::Mesh(d), c.span));
                     }
-                    return Ok(Object::new(Shape::Mesh(Arc::new(data)), c.span));
+                    return Ok(Object::new(Shape::Mesh(data), c.span));
                 }
                 Some(Tok::Block("triangle" | "smooth_triangle", _, _)) => {
                     let Some(Tok::Block(_, v, s)) = c.next() else {
@@ -146,7 +150,10 @@ impl Evaluator<'_> {
             data.texture_indices
                 .resize(data.triangles.len(), [u32::MAX; 3]);
         }
-        Ok(Object::new(Shape::Mesh(Arc::new(data)), c.span))
+        Ok(Object::new(
+            Shape::Mesh(self.mesh_cache.intern(data)),
+            c.span,
+        ))
     }
 
     fn inside_vector(&mut self, c: &mut Cursor) -> R<DVec3> {
@@ -332,7 +339,10 @@ impl Evaluator<'_> {
                 Diagnostic::error(codes::MISSING_VALUE, c.span, "this mesh2 has no faces").into(),
             );
         }
-        Ok(Object::new(Shape::Mesh(Arc::new(data)), c.span))
+        Ok(Object::new(
+            Shape::Mesh(self.mesh_cache.intern(data)),
+            c.span,
+        ))
     }
 
     fn indices(&self, (v, s): &Listed, count: usize, of: &str) -> R<[u32; 3]> {

@@ -9,24 +9,31 @@ mod atmosphere;
 mod blocks;
 mod builtins;
 mod camera;
+mod camera_path;
 mod cursor;
 mod directives;
 mod exprs;
 mod import;
 mod include;
 mod items;
+mod keyframe;
 mod lights;
 mod materials;
 mod mesh;
+mod mesh_cache;
 mod objects;
 mod path_tracing;
 mod patterns;
 mod scope;
 mod shapes;
+mod spline;
+mod timeline;
 pub mod value;
 
 pub use builtins::BUILTIN_NAMES;
 pub use include::{load_file, LoadError, STDLIB};
+pub use keyframe::{ease, Easing};
+pub use spline::{Spline, SplineKind};
 pub use value::Value;
 
 use crate::diag::{codes, Diagnostic, Label};
@@ -56,6 +63,14 @@ pub struct EvalOptions {
     pub initial_frame: f64,
     /// `final_frame`.
     pub final_frame: f64,
+    /// `initial_clock`.
+    pub initial_clock: f64,
+    /// `final_clock`.
+    pub final_clock: f64,
+    /// The timeline being rendered (from the command line and the scene's
+    /// `animation { }`), used to place keyframes given in seconds or frames.
+    /// `None`: the scene's own `animation { }`, else a default timeline.
+    pub timeline: Option<crate::scene::Timeline>,
     /// `image_width`.
     pub image_width: f64,
     /// `image_height`.
@@ -79,8 +94,11 @@ impl Default for EvalOptions {
             clock_delta: 0.0,
             clock_on: false,
             frame_number: 0.0,
-            initial_frame: 1.0,
-            final_frame: 1.0,
+            initial_frame: 0.0,
+            final_frame: 0.0,
+            initial_clock: 0.0,
+            final_clock: 0.0,
+            timeline: None,
             image_width: 800.0,
             image_height: 600.0,
             max_loop_iterations: 20_000_000,
@@ -101,6 +119,24 @@ pub struct Evaluated {
     pub diagnostics: Vec<Diagnostic>,
 }
 
+/// What one evaluation leaves for the next evaluation of the same scene (the
+/// frames of an animation): parsed include files, meshes read from files, and
+/// meshes by content, so geometry that does not change keeps the same `Arc` (and
+/// with it its BVH, see [`crate::build::BuildCache`]) from frame to frame.
+#[derive(Default)]
+pub struct EvalCache {
+    parsed_includes: rustc_hash::FxHashMap<FileId, Option<std::rc::Rc<ast::File>>>,
+    pub(crate) meshes: mesh_cache::MeshCache,
+    data_files: std::collections::BTreeSet<PathBuf>,
+}
+
+impl EvalCache {
+    /// Every data file (mesh, height field, image) the evaluations found, sorted.
+    pub fn data_files(&self) -> impl Iterator<Item = &std::path::Path> {
+        self.data_files.iter().map(PathBuf::as_path)
+    }
+}
+
 /// Evaluates a parsed file (already added to `sources` as `file_id`).
 pub fn eval(
     file: &ast::File,
@@ -108,7 +144,20 @@ pub fn eval(
     sources: &mut SourceMap,
     options: &EvalOptions,
 ) -> Evaluated {
+    eval_cached(file, file_id, sources, options, &mut EvalCache::default())
+}
+
+/// Evaluates a parsed file like [`eval`], reusing and filling `cache` (keep the
+/// same `sources` between calls).
+pub fn eval_cached(
+    file: &ast::File,
+    file_id: FileId,
+    sources: &mut SourceMap,
+    options: &EvalOptions,
+    cache: &mut EvalCache,
+) -> Evaluated {
     let scene_dir = sources.get(file_id).dir().map(PathBuf::from);
+    cache.meshes.begin();
     let mut ev = Evaluator {
         sources,
         options,
@@ -124,10 +173,16 @@ pub fn eval(
         scene_dir,
         rand_streams: Vec::new(),
         stopped: false,
-        parsed_includes: Default::default(),
+        parsed_includes: std::mem::take(&mut cache.parsed_includes),
+        mesh_cache: std::mem::take(&mut cache.meshes),
+        data_files: Default::default(),
     };
     ev.define_command_line();
     ev.run_top(&file.items);
+    cache.parsed_includes = std::mem::take(&mut ev.parsed_includes);
+    cache.meshes = std::mem::take(&mut ev.mesh_cache);
+    cache.meshes.end();
+    cache.data_files.extend(ev.data_files.take());
     ev.finish_scene()
 }
 
@@ -172,6 +227,10 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) stopped: bool,
     /// Include files parsed so far (`None`: it had syntax errors, already reported).
     pub(crate) parsed_includes: rustc_hash::FxHashMap<FileId, Option<std::rc::Rc<ast::File>>>,
+    /// Meshes kept from earlier evaluations of the same scene.
+    pub(crate) mesh_cache: mesh_cache::MeshCache,
+    /// Data files found (for the animation manifest's scene hash).
+    pub(crate) data_files: std::cell::RefCell<Vec<PathBuf>>,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps

@@ -82,6 +82,12 @@ pub struct CameraSpec {
     pub focal_point: DVec3,
     /// `blur_samples` (the larger value of `blur_samples MIN, MAX`).
     pub blur_samples: u32,
+    /// The smaller value of `blur_samples MIN, MAX` (1 when only MAX is given).
+    pub blur_min_samples: u32,
+    /// `confidence`.
+    pub confidence: f64,
+    /// `variance`.
+    pub variance: f64,
     /// Whether `right` or `up` was written (an orthographic camera then keeps their
     /// sizes).
     pub sized: bool,
@@ -103,6 +109,9 @@ impl Default for CameraSpec {
             aperture: 0.0,
             focal_point: DVec3::ZERO,
             blur_samples: 1,
+            blur_min_samples: 1,
+            confidence: 0.9,
+            variance: 1.0 / 128.0,
             sized: false,
         }
     }
@@ -147,6 +156,8 @@ pub enum Value {
     PigmentMap(Arc<Vec<(f64, Pigment)>>),
     /// A macro.
     Macro(Rc<MacroDef>),
+    /// A `spline { }`, called as `S(t)`.
+    Spline(Rc<super::spline::Spline>),
     /// The value of something whose evaluation failed (already reported); using it
     /// fails silently so one error does not cascade.
     Poison,
@@ -179,6 +190,7 @@ impl Value {
             Value::ColourMap(_) => "a colour map",
             Value::PigmentMap(_) => "a pigment map",
             Value::Macro(_) => "a macro",
+            Value::Spline(_) => "a spline",
             Value::Poison => "an erroneous value",
         }
     }

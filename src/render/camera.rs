@@ -49,6 +49,13 @@ pub fn primary_ray(
 /// Origin and (unnormalised) direction of the pinhole ray at screen point (sx, sy).
 fn pinhole(camera: &Camera, sx: f64, sy: f64) -> Option<(DVec3, DVec3)> {
     let (loc, d, r, u) = (camera.location, camera.direction, camera.right, camera.up);
+    match camera.kind {
+        // The common cases need no unit vectors: keep their square roots off
+        // every camera ray.
+        CameraKind::Perspective => return Some((loc, d + sx * r + sy * u)),
+        CameraKind::Orthographic => return Some((loc + sx * r + sy * u, d)),
+        _ => {}
+    }
     let (dn, rn, un) = (d.normalize(), r.normalize(), u.normalize());
     let aspect = r.length() / u.length();
     Some(match camera.kind {

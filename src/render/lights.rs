@@ -5,6 +5,20 @@ use super::shade::TraceCtx;
 use crate::build::{Ray, World};
 use crate::scene::{AreaLight, Beam, Light, LightKind};
 use glam::DVec3;
+use std::cell::Cell;
+
+/// Shadow hints kept per thread: one per light (by index, modulo the count).
+const HINT_SLOTS: usize = 16;
+
+thread_local! {
+    /// POV-Ray's shadow cache: per light, the primitive that last blocked one of
+    /// its shadow rays on this thread, tested before the hierarchy is walked.
+    /// Neighbouring points are usually shadowed by the same object, so a blocked
+    /// shadow ray mostly costs one intersection test. Only ever a hint: the
+    /// answer is the same whatever it holds, so pictures stay independent of
+    /// threads and order.
+    static SHADOW_HINTS: [Cell<u32>; HINT_SLOTS] = const { [const { Cell::new(u32::MAX) }; HINT_SLOTS] };
+}
 
 /// Light from one source reaching a point.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -69,9 +83,16 @@ pub fn incident(
         return None;
     }
     if !light.shadowless {
+        let slot = world
+            .lights
+            .iter()
+            .position(|l| std::ptr::eq(l, light))
+            .unwrap_or(0);
         let seen = match (&light.area, along_axis) {
-            (Some(area), false) => area_visibility(world, area, light.location, p, geo_n, ctx),
-            _ => shadow(world, p, geo_n, dir, dist, ctx),
+            (Some(area), false) => {
+                area_visibility(world, area, light.location, p, geo_n, slot, ctx)
+            }
+            _ => shadow(world, p, geo_n, dir, dist, slot, ctx),
         };
         colour *= seen;
         if colour == DVec3::ZERO {
@@ -86,13 +107,15 @@ pub fn incident(
 /// of the filter/transmit colours of transparent surfaces on the way otherwise.
 ///
 /// This is the single place shadow rays are traced, so transparent shadows can
-/// replace it.
+/// replace it. `light` is the light's index in the world (it picks the shadow
+/// hint the ray starts from).
 pub fn shadow(
     world: &World,
     p: DVec3,
     geo_n: DVec3,
     dir: DVec3,
     dist: f64,
+    light: usize,
     ctx: &mut TraceCtx,
 ) -> DVec3 {
     let (ray, eps) = Ray::secondary(p, geo_n, dir);
@@ -100,8 +123,14 @@ pub fn shadow(
         return DVec3::ONE;
     }
     ctx.stats.shadow += 1;
-    // Filtered by transparent surfaces on the way (0 behind opaque ones).
-    super::shade::shadow_filter(world, &ray, eps, dist - eps)
+    SHADOW_HINTS.with(|hints| {
+        let cell = &hints[light % HINT_SLOTS];
+        let mut hint = cell.get();
+        // Filtered by transparent surfaces on the way (0 behind opaque ones).
+        let seen = super::shade::shadow_filter(world, &ray, eps, dist - eps, &mut hint);
+        cell.set(hint);
+        seen
+    })
 }
 
 /// POV-Ray's distance fading: `2 / (1 + (d / fade_distance)^fade_power)`, or 1 when
@@ -180,6 +209,7 @@ fn area_visibility(
     centre: DVec3,
     p: DVec3,
     geo_n: DVec3,
+    light: usize,
     ctx: &mut TraceCtx,
 ) -> DVec3 {
     let (mut a1, mut a2) = (area.axis1, area.axis2);
@@ -194,6 +224,7 @@ fn area_visibility(
         a2,
         p,
         geo_n,
+        light,
         cache: vec![None; area.size1 as usize * area.size2 as usize],
     };
     let dyadic = |n: u32| n == 1 || (n - 1).is_power_of_two();
@@ -245,6 +276,8 @@ struct Grid<'a> {
     a2: DVec3,
     p: DVec3,
     geo_n: DVec3,
+    /// Index of the light in the world.
+    light: usize,
     cache: Vec<Option<DVec3>>,
 }
 
@@ -279,7 +312,15 @@ impl Grid<'_> {
         let to = pos - self.p;
         let dist = to.length();
         let c = if dist > 0.0 {
-            shadow(self.world, self.p, self.geo_n, to / dist, dist, ctx)
+            shadow(
+                self.world,
+                self.p,
+                self.geo_n,
+                to / dist,
+                dist,
+                self.light,
+                ctx,
+            )
         } else {
             DVec3::ONE
         };

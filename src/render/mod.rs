@@ -10,6 +10,7 @@ mod aa;
 mod atmosphere;
 mod camera;
 mod film;
+mod focal_blur;
 mod lights;
 mod passes;
 pub mod path;
@@ -156,18 +157,14 @@ pub fn render_with(
         },
     );
     let (cw, ch) = (crop.x1 - crop.x0, crop.y1 - crop.y0);
-    let sampling = match settings.sampling {
-        // A camera with focal blur takes its blur samples as a fixed count per
-        // pixel, like POV-Ray (lights/cameras track: `blur_samples`).
-        Sampling::Centre if dof_samples(world) > 1 => Sampling::Fixed(dof_samples(world)),
-        s => s,
-    };
+    let sampling = settings.sampling;
     let r = Renderer {
         world,
         w,
         h,
         settings,
         max_depth: 0.0,
+        blur_z: focal_blur::quantile(world.camera.confidence),
     };
     let max_depth = match settings.pass {
         Pass::Depth { max: Some(m) } => m,
@@ -272,18 +269,6 @@ pub fn render_with(
     }
 }
 
-/// Samples per pixel the camera's focal blur asks for (1: none). When the camera
-/// gains `blur_samples` and `aperture`, this becomes
-/// `if c.aperture > 0.0 { c.blur_samples.max(1) } else { 1 }`.
-fn dof_samples(world: &World) -> u32 {
-    let c = &world.camera;
-    if c.aperture > 0.0 {
-        c.blur_samples.max(1)
-    } else {
-        1
-    }
-}
-
 /// What every sample of one render shares.
 struct Renderer<'a> {
     world: &'a World,
@@ -292,13 +277,61 @@ struct Renderer<'a> {
     settings: &'a Settings,
     /// Black distance of the depth pass.
     max_depth: f64,
+    /// The normal quantile of the camera's focal-blur `confidence`.
+    blur_z: f64,
 }
 
 impl Renderer<'_> {
-    /// The value at image point (`x`, `y`) (continuous pixel units) using
-    /// `sampler` for anything the camera needs.
-    fn sample_at(&self, x: f64, y: f64, sampler: &mut Sampler, st: &mut RenderStats) -> DVec3 {
+    /// The value of sample `index` of pixel (`px`, `py`), taken at image point
+    /// (`x`, `y`) (continuous pixel units) using `sampler` for anything the
+    /// camera needs. A focal-blur camera averages several lens rays instead
+    /// (see [`Renderer::blurred`]).
+    fn sample_at(
+        &self,
+        (px, py, index): (u32, u32, u32),
+        (x, y): (f64, f64),
+        sampler: &mut Sampler,
+        st: &mut RenderStats,
+    ) -> DVec3 {
+        let world = self.world;
         st.samples += 1;
+        if self.settings.pass == Pass::Beauty && focal_blur::active(&world.camera) {
+            let jitter = matches!(self.settings.sampling, Sampling::Centre);
+            return self.blurred((px, py, index), (x, y), jitter, st);
+        }
+        self.one_ray((x, y), sampler, st)
+    }
+
+    /// POV-Ray's focal blur for one image sample: lens rays (each with its own
+    /// sampler, so their lens points are stratified) until the camera's
+    /// `confidence`/`variance` rule says the mean is close enough or
+    /// `blur_samples` is reached. With one sample per pixel (no anti-aliasing)
+    /// each ray also goes through a random point of the pixel, as in POV-Ray.
+    fn blurred(
+        &self,
+        (px, py, index): (u32, u32, u32),
+        (x, y): (f64, f64),
+        jitter: bool,
+        st: &mut RenderStats,
+    ) -> DVec3 {
+        let cam = &self.world.camera;
+        let mut run = focal_blur::Running::default();
+        let base = index.wrapping_mul(focal_blur::STRIDE);
+        while !run.converged(cam, self.blur_z) {
+            let mut s = self.sampler(px, py, base.wrapping_add(run.count()));
+            let at = if jitter {
+                let (u, v) = s.next_2d();
+                (f64::from(px) + u, f64::from(py) + v)
+            } else {
+                (x, y)
+            };
+            run.push(self.one_ray(at, &mut s, st));
+        }
+        run.mean()
+    }
+
+    /// The colour of the one camera ray through image point (`x`, `y`).
+    fn one_ray(&self, (x, y): (f64, f64), sampler: &mut Sampler, st: &mut RenderStats) -> DVec3 {
         let world = self.world;
         let Some(ray) = primary_ray(&world.camera, x, y, self.w, self.h, sampler) else {
             return DVec3::ZERO;
@@ -321,7 +354,8 @@ impl Renderer<'_> {
     /// The ray through the centre of pixel (`x`, `y`): sample 0.
     fn centre(&self, x: u32, y: u32, st: &mut RenderStats) -> DVec3 {
         let mut s = self.sampler(x, y, 0);
-        self.sample_at(f64::from(x) + 0.5, f64::from(y) + 0.5, &mut s, st)
+        let at = (f64::from(x) + 0.5, f64::from(y) + 0.5);
+        self.sample_at((x, y, 0), at, &mut s, st)
     }
 
     /// Mean of `n` stratified samples of pixel (`x`, `y`).
@@ -330,7 +364,7 @@ impl Renderer<'_> {
         for k in 0..n {
             let mut s = self.sampler(x, y, k);
             let (u, v) = s.next_2d();
-            sum += self.sample_at(f64::from(x) + u, f64::from(y) + v, &mut s, st);
+            sum += self.sample_at((x, y, k), (f64::from(x) + u, f64::from(y) + v), &mut s, st);
         }
         sum / f64::from(n)
     }
@@ -350,7 +384,8 @@ impl Renderer<'_> {
         for k in 0..n * n {
             let mut s = self.sampler(x, y, k + 1);
             let (dx, dy) = aa.grid_offset(k, s.next_2d());
-            sum += self.sample_at(f64::from(x) + dx, f64::from(y) + dy, &mut s, st);
+            let at = (f64::from(x) + dx, f64::from(y) + dy);
+            sum += self.sample_at((x, y, k + 1), at, &mut s, st);
         }
         sum / f64::from(n * n + 1)
     }
@@ -396,6 +431,7 @@ pub fn render_pixel(world: &World, i: u32, j: u32, width: u32, height: u32) -> D
         h: height,
         settings: &settings,
         max_depth: 0.0,
+        blur_z: focal_blur::quantile(world.camera.confidence),
     };
     r.centre(i, j, &mut RenderStats::default())
 }

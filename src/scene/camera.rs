@@ -60,9 +60,17 @@ pub struct Camera {
     /// Distance from `location` (along `direction`) of the plane in focus, from
     /// `focal_point`.
     pub focal_distance: f64,
-    /// `blur_samples`: how many samples per pixel a depth-of-field camera wants (the
-    /// render loop takes at least this many when `aperture > 0`).
+    /// `blur_samples [MIN,] MAX`: the most lens rays a depth-of-field camera
+    /// averages for one image sample.
     pub blur_samples: u32,
+    /// The fewest lens rays per image sample (`MIN` of `blur_samples MIN, MAX`).
+    pub blur_min_samples: u32,
+    /// `confidence` (default 0.9) and `variance` (default 1/128) of the rule that
+    /// stops taking lens rays once the mean is close enough (see
+    /// `render::focal_blur`).
+    pub confidence: f64,
+    /// See `confidence`.
+    pub variance: f64,
     /// Where the camera was written (default span for the default camera).
     pub span: Span,
 }
@@ -79,6 +87,9 @@ impl Default for Camera {
             aperture: 0.0,
             focal_distance: 1.0,
             blur_samples: 1,
+            blur_min_samples: 1,
+            confidence: 0.9,
+            variance: 1.0 / 128.0,
             span: Span::default(),
         }
     }

@@ -5,6 +5,7 @@
 //! The types are closed enums so new shapes, patterns and lights are added as variants
 //! without reshaping what exists.
 
+mod animation;
 mod atmosphere;
 mod camera;
 mod light;
@@ -13,6 +14,7 @@ mod object;
 mod path;
 mod transform;
 
+pub use animation::{Timeline, DEFAULT_FPS};
 pub use atmosphere::{Atmosphere, Fog, FogKind, SkySphere};
 pub use camera::{Camera, CameraKind};
 pub use light::{AreaLight, Beam, Light, LightKind};
@@ -41,6 +43,8 @@ pub struct Scene {
     pub global: GlobalSettings,
     /// `sky_sphere` and `fog`.
     pub atmosphere: Atmosphere,
+    /// `animation { … }`: the timeline the scene declares, if any.
+    pub animation: Option<Timeline>,
 }
 
 impl Default for Scene {
@@ -52,6 +56,7 @@ impl Default for Scene {
             background: Colour::BLACK,
             global: GlobalSettings::default(),
             atmosphere: Atmosphere::default(),
+            animation: None,
         }
     }
 }
