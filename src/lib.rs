@@ -6,6 +6,7 @@
 pub mod build;
 pub mod diag;
 pub mod eval;
+pub mod ide;
 pub mod output;
 pub mod render;
 pub mod scene;

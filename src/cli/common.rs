@@ -10,6 +10,8 @@ use std::path::Path;
 
 /// A loaded and evaluated scene with everything needed to print its diagnostics.
 pub struct Loaded {
+    /// The scene, unless it has errors.
+    pub scene: Option<Scene>,
     /// All files read.
     pub sources: SourceMap,
     /// Every diagnostic.
@@ -115,8 +117,8 @@ pub fn load(path: &Path, options: &EvalOptions) -> Result<Loaded, String> {
     let (scene, diags) = parsed.eval(options);
     let mut diagnostics = std::mem::take(&mut parsed.diagnostics);
     diagnostics.extend(diags);
-    let _ = scene;
     Ok(Loaded {
+        scene,
         sources: parsed.sources,
         diagnostics,
     })

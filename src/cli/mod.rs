@@ -1,14 +1,16 @@
-//! The command line: `rts render`, `rts check`. One file per subcommand.
+//! The command line: `rts render`, `rts check`, `rts lsp`, `rts watch`. One file per subcommand.
 
 mod assemble;
 mod check;
 mod common;
 mod frame;
+mod lsp;
 mod manifest;
 mod path_opts;
 mod render;
 mod sequence;
 mod stats;
+mod watch;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
@@ -80,6 +82,10 @@ pub enum Command {
     Render(Box<render::RenderArgs>),
     /// Parse and evaluate scenes without rendering; report problems.
     Check(check::CheckArgs),
+    /// Run the language server on stdin/stdout (for editors).
+    Lsp(lsp::LspArgs),
+    /// Re-render a scene whenever it or a file it includes changes.
+    Watch(watch::WatchArgs),
 }
 
 /// Runs the command line and returns the exit status.
@@ -87,5 +93,7 @@ pub fn run(cli: Cli) -> i32 {
     match cli.command {
         Command::Render(args) => render::run(&args),
         Command::Check(args) => check::run(&args),
+        Command::Lsp(args) => lsp::run(&args),
+        Command::Watch(args) => watch::run(&args),
     }
 }

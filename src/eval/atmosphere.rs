@@ -8,7 +8,7 @@ use crate::diag::{codes, Diagnostic};
 use crate::scene::{Fog, FogKind, Object, SkySphere, Transform};
 use glam::DVec3;
 
-const SKY_ITEMS: &[&str] = &[
+pub(crate) const SKY_ITEMS: &[&str] = &[
     "pigment",
     "translate",
     "rotate",
@@ -16,7 +16,7 @@ const SKY_ITEMS: &[&str] = &[
     "matrix",
     "transform",
 ];
-const FOG_ITEMS: &[&str] = &[
+pub(crate) const FOG_ITEMS: &[&str] = &[
     "fog_type",
     "distance",
     "color",

@@ -7,7 +7,7 @@ use crate::diag::{codes, Diagnostic};
 use crate::syntax::ast::Block;
 
 /// Blocks this release evaluates.
-const BLOCKS: &[&str] = &[
+pub(crate) const BLOCKS: &[&str] = &[
     "sphere",
     "plane",
     "box",

@@ -9,7 +9,7 @@ use crate::scene::{Camera, CameraKind, Transform};
 use crate::span::Span;
 use glam::DVec3;
 
-const CAMERA_ITEMS: &[&str] = &[
+pub(crate) const CAMERA_ITEMS: &[&str] = &[
     "perspective",
     "orthographic",
     "fisheye",
@@ -44,7 +44,7 @@ const PROJECTIONS: &[&str] = &[
     "panoramic",
     "spherical",
 ];
-const GLOBAL_ITEMS: &[&str] = &[
+pub(crate) const GLOBAL_ITEMS: &[&str] = &[
     "ambient_light",
     "assumed_gamma",
     "max_trace_level",

@@ -4,7 +4,7 @@
 use super::cursor::Sink;
 use super::{Evaluator, R};
 use crate::diag::{codes, did_you_mean, Diagnostic, Label};
-use crate::source::SourceMap;
+use crate::source::{FileAccess, SourceMap};
 use crate::span::{FileId, Span};
 use std::path::{Path, PathBuf};
 
@@ -21,6 +21,53 @@ pub const STDLIB: &[(&str, &str)] = &[
     ("textures.inc", include_str!("../stdlib/textures.inc")),
     ("woods.inc", include_str!("../stdlib/woods.inc")),
 ];
+
+/// The folders a file named in the scene is searched in: the including file's folder
+/// (`here`), the scene's folder (POV-Ray resolves relative to the scene), then the -I
+/// folders. An absolute name is used as it is.
+pub fn search_dirs(
+    name: &str,
+    here: Option<&Path>,
+    scene_dir: Option<&Path>,
+    access: &FileAccess,
+) -> Vec<PathBuf> {
+    if Path::new(name).is_absolute() {
+        return vec![PathBuf::new()];
+    }
+    let mut dirs: Vec<PathBuf> = Vec::new();
+    if let Some(d) = here {
+        dirs.push(d.to_path_buf());
+    }
+    if let Some(d) = scene_dir {
+        if !dirs.iter().any(|x| x == d) {
+            dirs.push(d.to_path_buf());
+        }
+    }
+    dirs.extend(access.include_dirs.iter().cloned());
+    dirs
+}
+
+/// Where `#include "name"` leads, searched as evaluation does (for editors): the
+/// canonical path of a permitted file in [`search_dirs`], else the name of a built-in
+/// library file (`<stdlib>/name`), else `None`.
+pub fn find_include(
+    name: &str,
+    here: Option<&Path>,
+    scene_dir: Option<&Path>,
+    access: &FileAccess,
+) -> Option<PathBuf> {
+    for dir in search_dirs(name, here, scene_dir, access) {
+        let path = dir.join(name);
+        if path.is_file() {
+            let canon = path.canonicalize().unwrap_or(path);
+            return access.permits(&canon, scene_dir).then_some(canon);
+        }
+    }
+    STDLIB
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(n, _)| PathBuf::from(format!("<stdlib>/{n}")))
+}
 
 /// Why a source file could not be loaded.
 #[derive(Debug)]
@@ -113,25 +160,15 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    /// The folders a file named in the scene is searched in: the including file's
-    /// folder, the scene's folder (POV-Ray resolves relative to the scene), then the
-    /// -I folders. An absolute name is used as it is.
+    /// The folders a file named in the scene is searched in (see [`search_dirs`]).
     fn search_dirs(&self, name: &str) -> Vec<PathBuf> {
-        if Path::new(name).is_absolute() {
-            return vec![PathBuf::new()];
-        }
         let here = self.include_stack.last().copied().unwrap_or(FileId(0));
-        let mut dirs: Vec<PathBuf> = Vec::new();
-        if let Some(d) = self.sources.get(here).dir() {
-            dirs.push(d.to_path_buf());
-        }
-        if let Some(d) = &self.scene_dir {
-            if !dirs.contains(d) {
-                dirs.push(d.clone());
-            }
-        }
-        dirs.extend(self.options.access.include_dirs.iter().cloned());
-        dirs
+        search_dirs(
+            name,
+            self.sources.get(here).dir(),
+            self.scene_dir.as_deref(),
+            &self.options.access,
+        )
     }
 
     /// Searches the folders of [`Self::search_dirs`] for `name` (written at `span`):

@@ -9,7 +9,7 @@ use crate::scene::{AreaLight, Beam, Light, LightKind, Transform};
 use crate::span::Span;
 use std::sync::Arc;
 
-const LIGHT_ITEMS: &[&str] = &[
+pub(crate) const LIGHT_ITEMS: &[&str] = &[
     "spotlight",
     "cylinder",
     "parallel",

@@ -13,7 +13,7 @@ use crate::scene::{
 use glam::DVec3;
 use std::sync::Arc;
 
-const TEXTURE_ITEMS: &[&str] = &[
+pub(crate) const TEXTURE_ITEMS: &[&str] = &[
     "pigment",
     "normal",
     "finish",
@@ -24,7 +24,7 @@ const TEXTURE_ITEMS: &[&str] = &[
     "transform",
 ];
 /// What a `pigment { }` accepts (for "did you mean" and help lists).
-fn pigment_items() -> Vec<&'static str> {
+pub(crate) fn pigment_items() -> Vec<&'static str> {
     let head = [
         "color",
         "rgb",
@@ -35,7 +35,7 @@ fn pigment_items() -> Vec<&'static str> {
     ];
     [&head[..], PATTERNS, MODIFIERS, TRANSFORMS].concat()
 }
-const FINISH_ITEMS: &[&str] = &[
+pub(crate) const FINISH_ITEMS: &[&str] = &[
     "ambient",
     "diffuse",
     "brilliance",
@@ -49,12 +49,12 @@ const FINISH_ITEMS: &[&str] = &[
     "conserve_energy",
     "crand",
 ];
-const REFLECTION_ITEMS: &[&str] = &["fresnel", "falloff", "metallic"];
+pub(crate) const REFLECTION_ITEMS: &[&str] = &["fresnel", "falloff", "metallic"];
 /// What a `normal { }` accepts.
-fn normal_items() -> Vec<&'static str> {
+pub(crate) fn normal_items() -> Vec<&'static str> {
     [PATTERNS, &["bump_size"], MODIFIERS, TRANSFORMS].concat()
 }
-const INTERIOR_ITEMS: &[&str] = &[
+pub(crate) const INTERIOR_ITEMS: &[&str] = &[
     "ior",
     "fade_distance",
     "fade_power",
@@ -64,7 +64,7 @@ const INTERIOR_ITEMS: &[&str] = &[
     "dispersion",
     "dispersion_samples",
 ];
-const IMAGE_MAP_ITEMS: &[&str] = &[
+pub(crate) const IMAGE_MAP_ITEMS: &[&str] = &[
     "png",
     "jpeg",
     "exr",

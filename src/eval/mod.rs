@@ -29,12 +29,14 @@ mod shapes;
 mod spline;
 mod timeline;
 pub mod value;
+mod vocabulary;
 
-pub use builtins::BUILTIN_NAMES;
-pub use include::{load_file, LoadError, STDLIB};
+pub use builtins::{is_function as is_builtin_function, BUILTIN_NAMES};
+pub use include::{find_include, load_file, search_dirs, LoadError, STDLIB};
 pub use keyframe::{ease, Easing};
 pub use spline::{Spline, SplineKind};
 pub use value::Value;
+pub use vocabulary::{block_keywords, TOP_LEVEL_KEYWORDS};
 
 use crate::diag::{codes, Diagnostic, Label};
 use crate::scene::{Scene, Texture};
@@ -117,6 +119,21 @@ pub struct Evaluated {
     pub scene: Scene,
     /// Errors, warnings and `#debug` notes.
     pub diagnostics: Vec<Diagnostic>,
+    /// The global names defined at the end of evaluation, for editors (hover).
+    pub globals: Vec<Declared>,
+}
+
+/// A global name as evaluation left it: where it was last declared and its value.
+#[derive(Clone, Debug)]
+pub struct Declared {
+    /// The name.
+    pub name: String,
+    /// Where it was last declared.
+    pub span: Span,
+    /// The kind of value, as in messages ("a float", "a texture", …).
+    pub kind: &'static str,
+    /// The value, for floats, vectors, colours and strings.
+    pub value: Option<String>,
 }
 
 /// What one evaluation leaves for the next evaluation of the same scene (the
@@ -341,9 +358,11 @@ impl Evaluator<'_> {
                 );
             }
         }
+        let globals = self.scope.globals();
         Evaluated {
             scene: self.scene,
             diagnostics: self.diags,
+            globals,
         }
     }
 }

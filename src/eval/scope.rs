@@ -55,6 +55,31 @@ impl Scopes {
         v
     }
 
+    /// The global bindings, with a short display of simple values (for editors).
+    pub(crate) fn globals(&self) -> Vec<super::Declared> {
+        let fmt = |v: &[f64]| {
+            let parts: Vec<String> = v.iter().map(|c| format!("{c}")).collect();
+            format!("<{}>", parts.join(", "))
+        };
+        self.frames[0]
+            .iter()
+            .map(|(n, b)| super::Declared {
+                name: n.name().to_string(),
+                span: b.span,
+                kind: b.value.kind(),
+                value: match &b.value {
+                    Value::Float(f) => Some(format!("{f}")),
+                    Value::Vector(v) => Some(fmt(v.as_slice())),
+                    Value::Colour(c) => {
+                        Some(format!("rgbft {}", fmt(&super::value::colour_to_array(c))))
+                    }
+                    Value::Str(s) => Some(format!("{s:?}")),
+                    _ => None,
+                },
+            })
+            .collect()
+    }
+
     /// Mutable access to the innermost binding of `name`.
     pub(crate) fn get_mut(&mut self, name: Sym) -> Option<&mut Binding> {
         self.frames.iter_mut().rev().find_map(|f| f.get_mut(&name))

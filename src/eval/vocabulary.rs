@@ -1,0 +1,131 @@
+//! Which keywords each block accepts, from the same lists the evaluator checks against;
+//! editors use it to complete only what is valid where the cursor is.
+
+use super::atmosphere::{FOG_ITEMS, SKY_ITEMS};
+use super::blocks::BLOCKS;
+use super::camera::{CAMERA_ITEMS, GLOBAL_ITEMS};
+use super::lights::LIGHT_ITEMS;
+use super::materials::{
+    normal_items, pigment_items, FINISH_ITEMS, IMAGE_MAP_ITEMS, INTERIOR_ITEMS, REFLECTION_ITEMS,
+    TEXTURE_ITEMS,
+};
+use super::objects::{OBJECT_MODIFIERS, TRANSFORMS};
+
+/// Blocks that stand at top level: objects, camera, lights and scene settings.
+pub const TOP_LEVEL_KEYWORDS: &[&str] = &[
+    "background",
+    "box",
+    "camera",
+    "cone",
+    "cylinder",
+    "difference",
+    "disc",
+    "fog",
+    "global_settings",
+    "height_field",
+    "intersection",
+    "light_source",
+    "merge",
+    "mesh",
+    "mesh2",
+    "object",
+    "plane",
+    "polygon",
+    "quadric",
+    "sky_sphere",
+    "smooth_triangle",
+    "sphere",
+    "torus",
+    "triangle",
+    "union",
+];
+
+/// Object blocks (shapes and CSG), which take [`OBJECT_MODIFIERS`] after their
+/// parameters.
+const OBJECTS: &[&str] = &[
+    "box",
+    "cone",
+    "cylinder",
+    "difference",
+    "disc",
+    "height_field",
+    "intersection",
+    "merge",
+    "mesh",
+    "mesh2",
+    "object",
+    "plane",
+    "polygon",
+    "quadric",
+    "smooth_triangle",
+    "sphere",
+    "torus",
+    "triangle",
+    "union",
+];
+
+/// The keywords valid among the items of a `block { … }`; `None` when the block is not
+/// one rts evaluates. For object blocks this includes the objects a CSG block may
+/// contain; for `None`-returning blocks editors should offer everything.
+pub fn block_keywords(block: &str) -> Option<Vec<&'static str>> {
+    let mut out: Vec<&'static str> = match block {
+        "texture" => TEXTURE_ITEMS.to_vec(),
+        "pigment" => pigment_items(),
+        "normal" => normal_items(),
+        "finish" => FINISH_ITEMS.to_vec(),
+        "reflection" => REFLECTION_ITEMS.to_vec(),
+        "interior" => INTERIOR_ITEMS.to_vec(),
+        "image_map" => IMAGE_MAP_ITEMS.to_vec(),
+        "camera" => CAMERA_ITEMS.to_vec(),
+        "light_source" => LIGHT_ITEMS.to_vec(),
+        "global_settings" => GLOBAL_ITEMS.to_vec(),
+        "path_tracing" => super::path_tracing::PATH_ITEMS.to_vec(),
+        "sky_sphere" => SKY_ITEMS.to_vec(),
+        "fog" => FOG_ITEMS.to_vec(),
+        "transform" => TRANSFORMS.to_vec(),
+        "color_map" | "colour_map" | "pigment_map" | "background" => Vec::new(),
+        "mesh" => vec!["triangle", "smooth_triangle", "inside_vector"],
+        "mesh2" => vec![
+            "vertex_vectors",
+            "normal_vectors",
+            "uv_vectors",
+            "texture_list",
+            "face_indices",
+            "normal_indices",
+            "uv_indices",
+            "inside_vector",
+        ],
+        "cylinder" | "cone" => vec!["open"],
+        "height_field" => vec!["png", "smooth", "water_level"],
+        "clipped_by" | "bounded_by" => OBJECTS.to_vec(),
+        "union" | "merge" | "intersection" | "difference" => OBJECTS.to_vec(),
+        "looks_like" => OBJECTS.to_vec(),
+        k if OBJECTS.contains(&k) => Vec::new(),
+        k if BLOCKS.contains(&k) => return None,
+        _ => return None,
+    };
+    if OBJECTS.contains(&block) {
+        out.extend_from_slice(OBJECT_MODIFIERS);
+    }
+    if block == "texture" || block == "pigment" {
+        out.extend_from_slice(&["color", "rgb"]);
+    }
+    out.sort_unstable();
+    out.dedup();
+    Some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn finish_takes_only_finish_keywords() {
+        let f = block_keywords("finish").expect("finish");
+        assert!(f.contains(&"phong") && f.contains(&"reflection"));
+        assert!(!f.contains(&"sphere") && !f.contains(&"translate"));
+        let s = block_keywords("sphere").expect("sphere");
+        assert!(s.contains(&"pigment") && s.contains(&"translate"));
+        assert!(block_keywords("no_such_block").is_none());
+    }
+}

@@ -1,0 +1,1353 @@
+//! The one documentation table for the language's words: every reserved keyword, colour
+//! keyword, directive, built-in function and constant, with a one-line description.
+//! Hover shows it; a test checks it covers the grammar's keywords and the evaluator's
+//! built-ins, and that each word it marks as implemented is described in
+//! `docs/language.md`.
+
+/// What kind of word a [`Doc`] describes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DocKind {
+    /// A reserved keyword (block or parameter).
+    Keyword,
+    /// A directive, written after `#`.
+    Directive,
+    /// A built-in function.
+    Function,
+    /// A built-in constant.
+    Constant,
+}
+
+/// The documentation of one word.
+#[derive(Clone, Copy, Debug)]
+pub struct Doc {
+    /// The word.
+    pub name: &'static str,
+    /// What it is.
+    pub kind: DocKind,
+    /// How it is written, e.g. `sphere { CENTER, RADIUS … }` or `vcross(A, B)`.
+    pub syntax: &'static str,
+    /// What it means.
+    pub summary: &'static str,
+    /// Whether rts implements it (POV-Ray keywords reserved for a later release: false).
+    pub implemented: bool,
+}
+
+const fn kw(name: &'static str, syntax: &'static str, summary: &'static str) -> Doc {
+    Doc {
+        name,
+        kind: DocKind::Keyword,
+        syntax,
+        summary,
+        implemented: true,
+    }
+}
+
+const fn later(name: &'static str, syntax: &'static str, summary: &'static str) -> Doc {
+    Doc {
+        name,
+        kind: DocKind::Keyword,
+        syntax,
+        summary,
+        implemented: false,
+    }
+}
+
+const fn dir(name: &'static str, syntax: &'static str, summary: &'static str) -> Doc {
+    Doc {
+        name,
+        kind: DocKind::Directive,
+        syntax,
+        summary,
+        implemented: true,
+    }
+}
+
+const fn func(name: &'static str, syntax: &'static str, summary: &'static str) -> Doc {
+    Doc {
+        name,
+        kind: DocKind::Function,
+        syntax,
+        summary,
+        implemented: true,
+    }
+}
+
+const fn constant(name: &'static str, syntax: &'static str, summary: &'static str) -> Doc {
+    Doc {
+        name,
+        kind: DocKind::Constant,
+        syntax,
+        summary,
+        implemented: true,
+    }
+}
+
+/// The table, one entry per word.
+pub const DOCS: &[Doc] = &[
+    // ------------------------------------------------------------------ directives
+    dir(
+        "declare",
+        "#declare NAME = VALUE;",
+        "Binds NAME globally (or updates the innermost existing binding).",
+    ),
+    dir(
+        "local",
+        "#local NAME = VALUE;",
+        "Binds NAME in the current macro call or include file only.",
+    ),
+    dir(
+        "undef",
+        "#undef NAME",
+        "Removes the innermost binding of NAME.",
+    ),
+    dir(
+        "if",
+        "#if (COND) … #elseif (COND) … #else … #end",
+        "Evaluates the first branch whose condition is not zero.",
+    ),
+    dir("elseif", "#elseif (COND)", "Another condition of an #if."),
+    dir("else", "#else", "The branch taken when no condition held."),
+    dir(
+        "end",
+        "#end",
+        "Closes #if, #ifdef, #ifndef, #switch, #while, #for and #macro.",
+    ),
+    dir(
+        "ifdef",
+        "#ifdef (NAME) … #end",
+        "Evaluates the body when NAME is declared.",
+    ),
+    dir(
+        "ifndef",
+        "#ifndef (NAME) … #end",
+        "Evaluates the body when NAME is not declared (include guards).",
+    ),
+    dir(
+        "switch",
+        "#switch (V) #case (A) … #break #range (L, H) … #else … #end",
+        "Chooses clauses by value.",
+    ),
+    dir(
+        "case",
+        "#case (V)",
+        "A #switch clause taken when the value equals V.",
+    ),
+    dir(
+        "range",
+        "#range (LOW, HIGH)",
+        "A #switch clause taken when LOW ≤ value ≤ HIGH.",
+    ),
+    dir("break", "#break", "Ends a #switch clause."),
+    dir(
+        "while",
+        "#while (COND) … #end",
+        "Repeats the body while COND is not zero.",
+    ),
+    dir(
+        "for",
+        "#for (I, START, END [, STEP]) … #end",
+        "Repeats the body with I from START to END inclusive.",
+    ),
+    dir(
+        "macro",
+        "#macro NAME(A, optional B) … #end",
+        "Defines a macro; a call expands its body with the arguments bound.",
+    ),
+    dir(
+        "include",
+        "#include \"FILE\"",
+        "Reads FILE (its folder, the scene's folder, -I folders, then the built-in library).",
+    ),
+    dir("debug", "#debug STRING", "Prints STRING as a note."),
+    dir("warning", "#warning STRING", "Reports STRING as a warning."),
+    dir("error", "#error STRING", "Stops with STRING as an error."),
+    dir(
+        "default",
+        "#default { texture { … } }",
+        "Sets the texture of objects that give none.",
+    ),
+    dir(
+        "version",
+        "#version 3.7;",
+        "The POV-Ray language version the scene is written for.",
+    ),
+    // ------------------------------------------------------------------ colours and values
+    kw(
+        "color",
+        "color rgb <R, G, B> | color red R green G …",
+        "A colour (also spelt `colour`).",
+    ),
+    kw(
+        "colour",
+        "colour rgb <R, G, B>",
+        "A colour (also spelt `color`).",
+    ),
+    kw(
+        "rgb",
+        "rgb <R, G, B>",
+        "A colour from red, green and blue (a float gives a grey).",
+    ),
+    kw(
+        "rgbf",
+        "rgbf <R, G, B, F>",
+        "A colour with filter (tinted transparency).",
+    ),
+    kw(
+        "rgbt",
+        "rgbt <R, G, B, T>",
+        "A colour with transmit (untinted transparency).",
+    ),
+    kw(
+        "rgbft",
+        "rgbft <R, G, B, F, T>",
+        "A colour with filter and transmit.",
+    ),
+    kw(
+        "srgb",
+        "srgb <R, G, B>",
+        "A colour given in sRGB-encoded components.",
+    ),
+    kw("srgbf", "srgbf <R, G, B, F>", "An sRGB colour with filter."),
+    kw(
+        "srgbt",
+        "srgbt <R, G, B, T>",
+        "An sRGB colour with transmit.",
+    ),
+    kw(
+        "srgbft",
+        "srgbft <R, G, B, F, T>",
+        "An sRGB colour with filter and transmit.",
+    ),
+    kw("red", "color red R", "The red component of a colour."),
+    kw("green", "color green G", "The green component of a colour."),
+    kw("blue", "color blue B", "The blue component of a colour."),
+    kw(
+        "gray",
+        "color gray G",
+        "Sets red, green and blue to G (also `grey`).",
+    ),
+    kw(
+        "grey",
+        "color grey G",
+        "Sets red, green and blue to G (also `gray`).",
+    ),
+    kw(
+        "filter",
+        "filter F",
+        "Filtered transparency: light passes tinted by the colour.",
+    ),
+    kw(
+        "transmit",
+        "transmit T",
+        "Transmitted transparency: light passes untinted.",
+    ),
+    kw(
+        "array",
+        "array[N] { A, B, … }",
+        "An array of N values (more dimensions with more `[N]`).",
+    ),
+    // ------------------------------------------------------------------ objects
+    kw("sphere", "sphere { CENTER, RADIUS … }", "A sphere."),
+    kw(
+        "plane",
+        "plane { NORMAL, DISTANCE … }",
+        "An infinite plane; its inside is opposite the normal.",
+    ),
+    kw(
+        "box",
+        "box { CORNER1, CORNER2 … }",
+        "An axis-aligned box between two corners.",
+    ),
+    kw(
+        "cylinder",
+        "cylinder { BASE, CAP, RADIUS [open] … }",
+        "A cylinder; `open` leaves out the end caps. In a light source: a cylindrical light.",
+    ),
+    kw(
+        "cone",
+        "cone { BASE, R1, CAP, R2 [open] … }",
+        "A truncated cone.",
+    ),
+    kw(
+        "torus",
+        "torus { MAJOR, MINOR … }",
+        "A torus around the y axis.",
+    ),
+    kw(
+        "disc",
+        "disc { CENTER, NORMAL, RADIUS [, HOLE] … }",
+        "A flat disc, optionally with a hole.",
+    ),
+    kw("triangle", "triangle { A, B, C … }", "A triangle."),
+    kw(
+        "smooth_triangle",
+        "smooth_triangle { A, NA, B, NB, C, NC … }",
+        "A triangle with a normal at each corner.",
+    ),
+    kw(
+        "polygon",
+        "polygon { N, P1, P2, … }",
+        "A flat polygon of N points (closed sub-polygons make holes).",
+    ),
+    kw(
+        "quadric",
+        "quadric { <A,B,C>, <D,E,F>, <G,H,I>, J … }",
+        "A second-order surface.",
+    ),
+    kw(
+        "mesh",
+        "mesh { triangle { … } … }",
+        "A mesh of triangles, or obj_file / ply_file.",
+    ),
+    kw(
+        "mesh2",
+        "mesh2 { vertex_vectors { … } face_indices { … } … }",
+        "An indexed triangle mesh.",
+    ),
+    kw(
+        "polyhedron",
+        "polyhedron { … }",
+        "A closed polyhedral mesh (rts addition).",
+    ),
+    kw(
+        "height_field",
+        "height_field { png \"FILE\" [smooth] [water_level W] … }",
+        "A height field from a grey image.",
+    ),
+    kw(
+        "obj_file",
+        "mesh { obj_file \"FILE\" }",
+        "Reads a Wavefront OBJ file into a mesh (rts addition).",
+    ),
+    kw(
+        "ply_file",
+        "mesh { ply_file \"FILE\" }",
+        "Reads a PLY file into a mesh (rts addition).",
+    ),
+    kw(
+        "object",
+        "object { NAME … }",
+        "An instance of a declared object, with modifiers.",
+    ),
+    kw(
+        "union",
+        "union { OBJECTS … }",
+        "CSG union: all the objects as one.",
+    ),
+    kw(
+        "merge",
+        "merge { OBJECTS … }",
+        "A union without inner surfaces (for transparent objects).",
+    ),
+    kw(
+        "intersection",
+        "intersection { OBJECTS … }",
+        "CSG intersection: what is inside every object.",
+    ),
+    kw(
+        "difference",
+        "difference { OBJECT, OBJECTS … }",
+        "CSG difference: the first object minus the others.",
+    ),
+    kw(
+        "clipped_by",
+        "clipped_by { OBJECT }",
+        "Cuts away the parts of an object outside the given shape.",
+    ),
+    kw(
+        "bounded_by",
+        "bounded_by { OBJECT }",
+        "A bounding shape (a hint; rts builds its own BVH).",
+    ),
+    kw(
+        "inverse",
+        "inverse",
+        "Swaps an object's inside and outside.",
+    ),
+    kw(
+        "hollow",
+        "hollow",
+        "Marks an object as hollow (for media and fog inside).",
+    ),
+    kw(
+        "open",
+        "open",
+        "Leaves out the end caps of a cylinder or cone.",
+    ),
+    kw("no_shadow", "no_shadow", "The object casts no shadows."),
+    kw(
+        "no_image",
+        "no_image",
+        "The object is invisible to camera rays.",
+    ),
+    kw(
+        "no_reflection",
+        "no_reflection",
+        "The object does not appear in reflections.",
+    ),
+    kw(
+        "double_illuminate",
+        "double_illuminate",
+        "Lights both sides of the object's surface.",
+    ),
+    kw(
+        "inside_vector",
+        "inside_vector <V>",
+        "A direction that tells inside from outside for a mesh.",
+    ),
+    kw(
+        "vertex_vectors",
+        "vertex_vectors { N, <V>, … }",
+        "The vertices of a mesh2.",
+    ),
+    kw(
+        "normal_vectors",
+        "normal_vectors { N, <V>, … }",
+        "The normals of a mesh2.",
+    ),
+    kw(
+        "uv_vectors",
+        "uv_vectors { N, <U, V>, … }",
+        "The uv coordinates of a mesh2.",
+    ),
+    kw(
+        "face_indices",
+        "face_indices { N, <A, B, C>, … }",
+        "The triangles of a mesh2 as vertex indices.",
+    ),
+    kw(
+        "normal_indices",
+        "normal_indices { N, <A, B, C>, … }",
+        "Normal indices per triangle of a mesh2.",
+    ),
+    kw(
+        "uv_indices",
+        "uv_indices { N, <A, B, C>, … }",
+        "uv indices per triangle of a mesh2.",
+    ),
+    kw(
+        "texture_list",
+        "texture_list { N, texture { … } … }",
+        "The textures a mesh2's faces refer to.",
+    ),
+    kw("smooth", "smooth", "Smooths a height field's normals."),
+    kw(
+        "water_level",
+        "water_level W",
+        "Cuts a height field below W (0 to 1).",
+    ),
+    kw("png", "png \"FILE\"", "A PNG image file."),
+    kw("jpeg", "jpeg \"FILE\"", "A JPEG image file."),
+    kw("exr", "exr \"FILE\"", "An OpenEXR image file."),
+    // ------------------------------------------------------------------ transforms
+    kw("translate", "translate <V>", "Moves by V."),
+    kw(
+        "rotate",
+        "rotate <X, Y, Z>",
+        "Rotates by degrees about x, then y, then z.",
+    ),
+    kw(
+        "scale",
+        "scale <V> | scale S",
+        "Scales by V (a float scales uniformly).",
+    ),
+    kw(
+        "matrix",
+        "matrix <12 floats>",
+        "An affine transform given as a 4×3 matrix.",
+    ),
+    kw(
+        "transform",
+        "transform { … } | transform NAME",
+        "A transform, or a declared one applied (`inverse` reverses it).",
+    ),
+    // ------------------------------------------------------------------ textures
+    kw(
+        "texture",
+        "texture { pigment { … } normal { … } finish { … } }",
+        "An object's surface: pigment, normal and finish.",
+    ),
+    kw(
+        "pigment",
+        "pigment { COLOUR | PATTERN … }",
+        "The surface colour, plain or a pattern.",
+    ),
+    kw(
+        "finish",
+        "finish { ambient … diffuse … phong … reflection … }",
+        "How the surface reacts to light.",
+    ),
+    kw(
+        "normal",
+        "normal { PATTERN [BUMP_SIZE] … }",
+        "Bumps the surface normal with a pattern.",
+    ),
+    kw(
+        "interior",
+        "interior { ior … fade_distance … }",
+        "What is inside a transparent object.",
+    ),
+    later(
+        "material",
+        "material { texture { … } interior { … } }",
+        "A texture and interior together.",
+    ),
+    kw(
+        "uv_mapping",
+        "uv_mapping",
+        "Maps the pattern with the object's uv coordinates.",
+    ),
+    kw(
+        "color_map",
+        "color_map { [V COLOUR] … }",
+        "Colours of a pattern by value (also `colour_map`).",
+    ),
+    kw(
+        "colour_map",
+        "colour_map { [V COLOUR] … }",
+        "Colours of a pattern by value (also `color_map`).",
+    ),
+    kw(
+        "pigment_map",
+        "pigment_map { [V pigment { … }] … }",
+        "Pigments of a pattern by value.",
+    ),
+    kw(
+        "image_map",
+        "image_map { png \"FILE\" [map_type N] [interpolate N] [once] }",
+        "An image as a pigment.",
+    ),
+    kw(
+        "map_type",
+        "map_type N",
+        "Image projection: 0 planar, 1 spherical, 2 cylindrical, 5 torus.",
+    ),
+    kw(
+        "interpolate",
+        "interpolate N",
+        "Image interpolation: 2 bilinear, 4 normalized distance.",
+    ),
+    kw(
+        "once",
+        "once",
+        "Shows an image map once instead of tiling it.",
+    ),
+    kw(
+        "all",
+        "filter all F | transmit all T",
+        "Sets filter or transmit for every colour of an image.",
+    ),
+    // patterns
+    kw(
+        "checker",
+        "checker COLOUR, COLOUR",
+        "A 3-D checkerboard of unit cubes.",
+    ),
+    kw(
+        "hexagon",
+        "hexagon COLOUR, COLOUR, COLOUR",
+        "Hexagons in the x-z plane.",
+    ),
+    kw(
+        "brick",
+        "brick COLOUR, COLOUR brick_size <V> mortar M",
+        "A brick wall pattern.",
+    ),
+    kw(
+        "brick_size",
+        "brick_size <V>",
+        "The size of the bricks of a brick pattern.",
+    ),
+    kw(
+        "mortar",
+        "mortar M",
+        "The width of the mortar of a brick pattern.",
+    ),
+    kw(
+        "gradient",
+        "gradient <V>",
+        "A ramp along V, repeating every unit.",
+    ),
+    kw("radial", "radial", "Values by angle around the y axis."),
+    kw("onion", "onion", "Concentric spheres."),
+    kw("leopard", "leopard", "Regular spots."),
+    kw("spotted", "spotted", "Noise spots."),
+    kw("bozo", "bozo", "Smooth noise."),
+    kw(
+        "marble",
+        "marble",
+        "Marble veins: a turbulent ramp along x.",
+    ),
+    kw("wood", "wood", "Wood rings around the z axis."),
+    kw("granite", "granite", "Fractal noise like granite."),
+    kw("agate", "agate", "Turbulent agate bands."),
+    kw(
+        "agate_turb",
+        "agate_turb T",
+        "The turbulence of the agate pattern.",
+    ),
+    kw(
+        "wrinkles",
+        "wrinkles",
+        "Wrinkled noise (mostly for normals).",
+    ),
+    kw(
+        "ripples",
+        "ripples",
+        "Concentric ripples (mostly for normals).",
+    ),
+    kw("waves", "waves", "Concentric waves (mostly for normals)."),
+    kw("bumps", "bumps", "Noise bumps (mostly for normals)."),
+    kw("dents", "dents", "Dents (mostly for normals)."),
+    kw("bump_size", "bump_size S", "The depth of a normal pattern."),
+    kw("turbulence", "turbulence T", "Stirs a pattern with noise."),
+    kw(
+        "octaves",
+        "octaves N",
+        "Noise octaves of turbulence (default 6).",
+    ),
+    kw(
+        "omega",
+        "omega W",
+        "Amplitude factor between octaves of turbulence (default 0.5).",
+    ),
+    kw(
+        "lambda",
+        "lambda L",
+        "Frequency factor between octaves of turbulence (default 2).",
+    ),
+    kw(
+        "frequency",
+        "frequency F",
+        "How often a pattern's colour map repeats.",
+    ),
+    kw("phase", "phase P", "Shifts a pattern's colour map."),
+    kw("ramp_wave", "ramp_wave", "Wave form: a ramp (the default)."),
+    kw("triangle_wave", "triangle_wave", "Wave form: up and down."),
+    kw("sine_wave", "sine_wave", "Wave form: a sine."),
+    kw("scallop_wave", "scallop_wave", "Wave form: scallops."),
+    kw("cubic_wave", "cubic_wave", "Wave form: a smooth step."),
+    kw("poly_wave", "poly_wave E", "Wave form: a power E."),
+    kw(
+        "noise_generator",
+        "noise_generator N",
+        "Which noise function: 1, 2 or 3 (default 2).",
+    ),
+    // finish
+    kw(
+        "ambient",
+        "ambient A",
+        "Light the surface gives without any light source (default 0.1).",
+    ),
+    kw(
+        "diffuse",
+        "diffuse D",
+        "How much direct light is scattered (default 0.6).",
+    ),
+    kw(
+        "brilliance",
+        "brilliance B",
+        "How fast diffuse light falls off with angle (default 1).",
+    ),
+    kw("phong", "phong P", "Phong highlight strength."),
+    kw(
+        "phong_size",
+        "phong_size S",
+        "Phong highlight tightness (default 40).",
+    ),
+    kw(
+        "specular",
+        "specular S",
+        "Blinn specular highlight strength.",
+    ),
+    kw(
+        "roughness",
+        "roughness R",
+        "Size of the specular highlight (default 0.05).",
+    ),
+    kw(
+        "metallic",
+        "metallic [M]",
+        "Tints highlights (or reflection) with the surface colour.",
+    ),
+    kw(
+        "reflection",
+        "reflection R | reflection { MIN, MAX fresnel falloff metallic }",
+        "Mirror reflection.",
+    ),
+    kw(
+        "emission",
+        "emission E",
+        "Light the surface emits (not lighting other objects).",
+    ),
+    kw(
+        "conserve_energy",
+        "conserve_energy",
+        "Reduces diffuse and transmission where reflection is strong.",
+    ),
+    kw(
+        "crand",
+        "crand C",
+        "Random graininess of the surface colour.",
+    ),
+    kw(
+        "fresnel",
+        "fresnel",
+        "Angle-dependent reflection from the interior's ior.",
+    ),
+    kw(
+        "falloff",
+        "falloff F",
+        "Reflection falloff exponent; in a spotlight, the outer cone angle.",
+    ),
+    later(
+        "exponent",
+        "exponent E",
+        "Exponent of a reflection's or light's falloff.",
+    ),
+    later(
+        "irid",
+        "irid { A thickness T turbulence U }",
+        "Iridescence (thin-film colours).",
+    ),
+    later("thickness", "thickness T", "The film thickness of irid."),
+    later(
+        "reflection_exponent",
+        "reflection_exponent E",
+        "Non-linear reflection (POV-Ray 3.5 form).",
+    ),
+    // interior
+    kw(
+        "ior",
+        "ior N",
+        "Index of refraction (1 air, 1.33 water, 1.5 glass).",
+    ),
+    kw(
+        "fade_distance",
+        "fade_distance D",
+        "Distance at which light inside fades (interior) or from a light.",
+    ),
+    kw(
+        "fade_power",
+        "fade_power P",
+        "How light fades with distance (1 linear, 2 physical).",
+    ),
+    kw(
+        "fade_color",
+        "fade_color COLOUR",
+        "The colour light fades to inside (also `fade_colour`).",
+    ),
+    kw(
+        "fade_colour",
+        "fade_colour COLOUR",
+        "The colour light fades to inside (also `fade_color`).",
+    ),
+    kw(
+        "caustics",
+        "caustics C",
+        "Fakes caustics by brightening light through the object.",
+    ),
+    kw(
+        "dispersion",
+        "dispersion D",
+        "Splits light by wavelength (ior varies by colour).",
+    ),
+    // camera
+    kw(
+        "camera",
+        "camera { location <L> look_at <T> angle A … }",
+        "The camera: where it stands, what it looks at, its projection.",
+    ),
+    kw(
+        "perspective",
+        "perspective",
+        "Projection: a pinhole camera (the default).",
+    ),
+    kw("orthographic", "orthographic", "Projection: parallel rays."),
+    kw("fisheye", "fisheye", "Projection: a spherical fisheye."),
+    kw(
+        "ultra_wide_angle",
+        "ultra_wide_angle",
+        "Projection: up to 360° wide.",
+    ),
+    kw(
+        "panoramic",
+        "panoramic",
+        "Projection: a cylindrical panorama.",
+    ),
+    kw(
+        "spherical",
+        "spherical",
+        "Projection: latitude-longitude (environment maps).",
+    ),
+    kw("location", "location <L>", "Where the camera stands."),
+    kw("look_at", "look_at <T>", "The point the camera looks at."),
+    kw(
+        "up",
+        "up <V>",
+        "The camera's up vector (default y); in fog, the up direction.",
+    ),
+    kw(
+        "right",
+        "right <V>",
+        "The camera's right vector (its length sets the aspect ratio).",
+    ),
+    kw(
+        "direction",
+        "direction <V>",
+        "The camera's viewing direction (its length sets the zoom).",
+    ),
+    kw("sky", "sky <V>", "Which way is up for look_at (default y)."),
+    kw(
+        "angle",
+        "angle A",
+        "The horizontal field of view in degrees.",
+    ),
+    kw(
+        "aperture",
+        "aperture A",
+        "Focal blur: the lens size (0: everything sharp).",
+    ),
+    kw(
+        "focal_point",
+        "focal_point <P>",
+        "Focal blur: the point in focus.",
+    ),
+    kw(
+        "blur_samples",
+        "blur_samples N",
+        "Focal blur: rays per pixel.",
+    ),
+    kw(
+        "confidence",
+        "confidence C",
+        "Focal blur: adaptive sampling confidence.",
+    ),
+    kw(
+        "variance",
+        "variance V",
+        "Focal blur: adaptive sampling variance.",
+    ),
+    // lights
+    kw(
+        "light_source",
+        "light_source { <L>, COLOUR … }",
+        "A light at a location with a colour.",
+    ),
+    kw(
+        "spotlight",
+        "spotlight",
+        "A cone of light towards point_at.",
+    ),
+    kw(
+        "parallel",
+        "parallel",
+        "Parallel rays, as from a far sun, towards point_at.",
+    ),
+    kw(
+        "point_at",
+        "point_at <P>",
+        "Where a spotlight, cylinder or parallel light aims.",
+    ),
+    kw(
+        "radius",
+        "radius R",
+        "A spotlight's full-intensity cone angle (degrees).",
+    ),
+    kw(
+        "tightness",
+        "tightness T",
+        "How fast a spotlight dims towards its edge.",
+    ),
+    kw(
+        "area_light",
+        "area_light <A1>, <A2>, N1, N2",
+        "A rectangle of N1×N2 lights for soft shadows.",
+    ),
+    kw("jitter", "jitter", "Jitters area light samples."),
+    kw(
+        "adaptive",
+        "adaptive A",
+        "Adaptive area light sampling depth.",
+    ),
+    kw("circular", "circular", "Makes an area light round."),
+    kw(
+        "orient",
+        "orient",
+        "Turns an area light to face each point lit.",
+    ),
+    kw("shadowless", "shadowless", "The light casts no shadows."),
+    kw(
+        "looks_like",
+        "looks_like { OBJECT }",
+        "An object drawn at the light's place (casting no shadow).",
+    ),
+    kw(
+        "media_interaction",
+        "media_interaction on|off",
+        "Whether the light interacts with media.",
+    ),
+    kw(
+        "media_attenuation",
+        "media_attenuation on|off",
+        "Whether media dims the light.",
+    ),
+    later(
+        "global_lights",
+        "global_lights on|off",
+        "Whether scene lights also light a light_group.",
+    ),
+    later(
+        "light_group",
+        "light_group { LIGHTS OBJECTS }",
+        "Lights that light only the objects of the group.",
+    ),
+    // scene settings
+    kw(
+        "global_settings",
+        "global_settings { assumed_gamma 1.0 … }",
+        "Settings for the whole scene.",
+    ),
+    kw(
+        "assumed_gamma",
+        "assumed_gamma G",
+        "The gamma colours are given in (use 1.0).",
+    ),
+    kw(
+        "ambient_light",
+        "ambient_light COLOUR",
+        "Scales every finish's ambient (default white).",
+    ),
+    kw(
+        "max_trace_level",
+        "max_trace_level N",
+        "Deepest reflection/refraction recursion (default 5).",
+    ),
+    kw(
+        "adc_bailout",
+        "adc_bailout A",
+        "Stops tracing rays that contribute less than A.",
+    ),
+    kw(
+        "path_tracing",
+        "path_tracing { samples 64 max_depth 8 }",
+        "In global_settings (rts): render with the path tracer (docs/pathtracing.md).",
+    ),
+    kw(
+        "samples",
+        "samples N",
+        "path_tracing: samples per pixel (default 64).",
+    ),
+    kw(
+        "max_depth",
+        "max_depth N",
+        "path_tracing: longest path in segments, camera ray included (default 8).",
+    ),
+    kw(
+        "firefly_clamp",
+        "firefly_clamp X",
+        "path_tracing: largest channel value one sample may add (0: off).",
+    ),
+    kw(
+        "pixel_filter",
+        "pixel_filter \"box\" | \"gaussian\"",
+        "path_tracing: the reconstruction filter (default gaussian).",
+    ),
+    kw(
+        "background",
+        "background { COLOUR }",
+        "The colour of rays that hit nothing.",
+    ),
+    kw(
+        "sky_sphere",
+        "sky_sphere { pigment { … } }",
+        "A pigment on an infinitely large sphere around the scene.",
+    ),
+    kw(
+        "fog",
+        "fog { distance D color COLOUR [fog_type 2 …] }",
+        "Fog: constant or ground fog.",
+    ),
+    kw("fog_type", "fog_type T", "1 constant fog, 2 ground fog."),
+    kw(
+        "distance",
+        "distance D",
+        "The distance at which fog leaves 37% of the light.",
+    ),
+    kw(
+        "fog_offset",
+        "fog_offset O",
+        "Ground fog: the height where it starts to thin.",
+    ),
+    kw(
+        "fog_alt",
+        "fog_alt A",
+        "Ground fog: how fast it thins with height.",
+    ),
+    later("radiosity", "radiosity { … }", "Indirect diffuse lighting."),
+    later("photons", "photons { … }", "Photon mapping for caustics."),
+    later("media", "media { … }", "Participating media (smoke, haze)."),
+    // splines
+    kw(
+        "spline",
+        "spline { linear_spline T, <V> … }",
+        "A spline through keyed values (POV-Ray's); call it as `S(T)`.",
+    ),
+    kw(
+        "linear_spline",
+        "linear_spline",
+        "Spline type: straight segments.",
+    ),
+    kw(
+        "quadratic_spline",
+        "quadratic_spline",
+        "Spline type: the parabola through the points before, at and after each piece.",
+    ),
+    kw(
+        "cubic_spline",
+        "cubic_spline",
+        "Spline type: cubic from the second point to the next-to-last (Catmull-Rom slopes).",
+    ),
+    kw(
+        "natural_spline",
+        "natural_spline",
+        "Spline type: natural cubic.",
+    ),
+    // animation (ours; see docs/animation.md)
+    kw(
+        "animation",
+        "animation { frames N | duration S  fps F  clock_range C0, C1  cyclic  motion_blur SHUTTER }",
+        "The scene's own timeline: frame count or duration, frame rate, clock range.",
+    ),
+    kw("frames", "frames N | frames A, B", "Timeline length in frames (animation), or key times in frames (keyframes)."),
+    kw("fps", "fps F", "Frames per second of the timeline."),
+    kw("duration", "duration SECONDS", "Timeline length in seconds (with fps)."),
+    kw("clock_range", "clock_range C0, C1", "The clock at the first and the last frame."),
+    kw("cyclic", "cyclic", "Cyclic animation: the last frame is not the first one again (POV-Ray's +KC)."),
+    kw("motion_blur", "motion_blur SHUTTER [, N]", "Average N instants over SHUTTER (0 to 1) of each frame."),
+    kw(
+        "keyframes",
+        "keyframes { [catmull_rom|…] [seconds|frames] [hold|loop|ping_pong] key T, V [ease_in] … }",
+        "A float, vector or colour keyed in time, usable wherever a value is.",
+    ),
+    kw("key", "key T, VALUE [easing]", "One key of a keyframes block."),
+    kw("catmull_rom", "catmull_rom", "Keyframe interpolation: Catmull-Rom."),
+    kw("bezier_spline", "bezier_spline", "Keyframe interpolation: Bézier with `tangent`s."),
+    kw("step_spline", "step_spline", "Keyframe interpolation: hold each key until the next."),
+    kw("hold", "hold", "Beyond the keys: keep the end values."),
+    kw("loop", "loop", "Beyond the keys: repeat."),
+    kw("ping_pong", "ping_pong", "Beyond the keys: repeat back and forth."),
+    kw("seconds", "seconds", "Key times are in seconds."),
+    kw("ease_in", "ease_in", "Easing of the segment after a key: slow start."),
+    kw("ease_out", "ease_out", "Easing of the segment after a key: slow end."),
+    kw("ease_in_out", "ease_in_out", "Easing of the segment after a key: slow start and end."),
+    kw("ease_bezier", "ease_bezier X1, Y1, X2, Y2", "Easing by cubic-Bézier control points (as CSS)."),
+    kw("tangent", "tangent V", "Tangent at a key of a bezier_spline."),
+    kw(
+        "camera_path",
+        "camera_path { location C  look_at C | look_along  angle C  roll C  sky V }",
+        "A keyed camera that stays level and never flips at the poles.",
+    ),
+    kw("look_along", "look_along", "A camera_path looks along its path's tangent."),
+    kw("roll", "roll DEGREES", "A camera_path's roll about its view direction."),
+    // later
+    later(
+        "blob",
+        "blob { threshold T sphere { … } … }",
+        "A blob of spheres and cylinders.",
+    ),
+    later(
+        "isosurface",
+        "isosurface { function { … } … }",
+        "A surface where a function is zero.",
+    ),
+    later(
+        "julia_fractal",
+        "julia_fractal { … }",
+        "A 4-D Julia fractal.",
+    ),
+    later(
+        "lathe",
+        "lathe { N, POINTS … }",
+        "A surface of revolution of a spline.",
+    ),
+    later(
+        "prism",
+        "prism { Y1, Y2, N, POINTS … }",
+        "An extruded spline.",
+    ),
+    later("sor", "sor { N, POINTS … }", "A surface of revolution."),
+    later(
+        "superellipsoid",
+        "superellipsoid { <E, N> }",
+        "A superquadric ellipsoid.",
+    ),
+    later(
+        "text",
+        "text { ttf \"FONT\" \"TEXT\", DEPTH, OFFSET }",
+        "3-D text.",
+    ),
+    later("ttf", "ttf \"FONT\"", "A TrueType font file for text."),
+    later(
+        "sphere_sweep",
+        "sphere_sweep { linear_spline N, … }",
+        "A sphere swept along a spline.",
+    ),
+    later("bicubic_patch", "bicubic_patch { … }", "A Bézier patch."),
+    later("warp", "warp { turbulence T }", "Warps a pattern."),
+    later(
+        "normal_map",
+        "normal_map { [V normal { … }] … }",
+        "Normals of a pattern by value.",
+    ),
+    later(
+        "texture_map",
+        "texture_map { [V texture { … }] … }",
+        "Textures of a pattern by value.",
+    ),
+    // ------------------------------------------------------------------ built-in constants
+    constant("pi", "pi", "3.14159…"),
+    constant("tau", "tau", "2π."),
+    constant("x", "x", "The vector <1, 0, 0>."),
+    constant("y", "y", "The vector <0, 1, 0>."),
+    constant("z", "z", "The vector <0, 0, 1>."),
+    constant("t", "t", "The 4-vector <0, 0, 0, 1>."),
+    constant("u", "u", "The 2-vector <1, 0>."),
+    constant("v", "v", "The 2-vector <0, 1>."),
+    constant("true", "true", "1."),
+    constant("false", "false", "0."),
+    constant("on", "on", "1."),
+    constant("off", "off", "0."),
+    constant("yes", "yes", "1."),
+    constant("no", "no", "0."),
+    constant(
+        "clock",
+        "clock",
+        "The animation clock (--clock; 0 for a still).",
+    ),
+    constant(
+        "clock_delta",
+        "clock_delta",
+        "The clock step between frames.",
+    ),
+    constant("clock_on", "clock_on", "1 when an animation is rendered."),
+    constant(
+        "frame_number",
+        "frame_number",
+        "The current frame of an animation.",
+    ),
+    constant(
+        "initial_frame",
+        "initial_frame",
+        "The first frame of an animation.",
+    ),
+    constant(
+        "final_frame",
+        "final_frame",
+        "The last frame of an animation.",
+    ),
+    constant(
+        "initial_clock",
+        "initial_clock",
+        "The clock at the first frame.",
+    ),
+    constant("final_clock", "final_clock", "The clock at the last frame."),
+    constant(
+        "image_width",
+        "image_width",
+        "The width of the image in pixels.",
+    ),
+    constant(
+        "image_height",
+        "image_height",
+        "The height of the image in pixels.",
+    ),
+    constant("version", "version", "The language version (3.7)."),
+    // ------------------------------------------------------------------ built-in functions
+    func("abs", "abs(A)", "Absolute value."),
+    func("acos", "acos(A)", "Arc cosine, in radians."),
+    func("asin", "asin(A)", "Arc sine, in radians."),
+    func("atan", "atan(A)", "Arc tangent, in radians."),
+    func(
+        "atan2",
+        "atan2(A, B)",
+        "Arc tangent of A/B using both signs, in radians.",
+    ),
+    func("ceil", "ceil(A)", "The smallest integer ≥ A."),
+    func("cos", "cos(A)", "Cosine of A radians."),
+    func("cosh", "cosh(A)", "Hyperbolic cosine."),
+    func("degrees", "degrees(A)", "Radians to degrees."),
+    func("radians", "radians(A)", "Degrees to radians."),
+    func(
+        "div",
+        "div(A, B)",
+        "Integer division, truncated towards zero.",
+    ),
+    func("exp", "exp(A)", "e to the power A."),
+    func("floor", "floor(A)", "The largest integer ≤ A."),
+    func("int", "int(A)", "A truncated towards zero."),
+    func("ln", "ln(A)", "Natural logarithm."),
+    func("log", "log(A)", "Base-10 logarithm."),
+    func("max", "max(A, B, …)", "The largest argument."),
+    func("min", "min(A, B, …)", "The smallest argument."),
+    func("mod", "mod(A, B)", "Remainder of A/B, with the sign of A."),
+    func("pow", "pow(A, B)", "A to the power B."),
+    func("sin", "sin(A)", "Sine of A radians."),
+    func("sinh", "sinh(A)", "Hyperbolic sine."),
+    func("sqrt", "sqrt(A)", "Square root."),
+    func("tan", "tan(A)", "Tangent of A radians."),
+    func("tanh", "tanh(A)", "Hyperbolic tangent."),
+    func("acosh", "acosh(A)", "Inverse hyperbolic cosine."),
+    func("asinh", "asinh(A)", "Inverse hyperbolic sine."),
+    func("atanh", "atanh(A)", "Inverse hyperbolic tangent."),
+    func(
+        "select",
+        "select(A, NEG, ZERO [, POS])",
+        "Chooses by the sign of A.",
+    ),
+    func("vlength", "vlength(V)", "The length of a vector."),
+    func("vnormalize", "vnormalize(V)", "V scaled to length 1."),
+    func("vdot", "vdot(A, B)", "Dot product."),
+    func("vcross", "vcross(A, B)", "Cross product."),
+    func(
+        "vrotate",
+        "vrotate(V, <X, Y, Z>)",
+        "V rotated by degrees about x, y, z.",
+    ),
+    func(
+        "vaxis_rotate",
+        "vaxis_rotate(V, AXIS, DEG)",
+        "V rotated DEG degrees about AXIS.",
+    ),
+    func(
+        "seed",
+        "seed(N)",
+        "A random stream for rand, seeded with N.",
+    ),
+    func(
+        "rand",
+        "rand(STREAM)",
+        "The next number in [0, 1) of a seed() stream.",
+    ),
+    func("str", "str(A, WIDTH, DECIMALS)", "A float as text."),
+    func("concat", "concat(S1, S2, …)", "Joins strings."),
+    func("strlen", "strlen(S)", "The length of a string."),
+    func(
+        "substr",
+        "substr(S, START, LENGTH)",
+        "Part of a string (START is 1-based).",
+    ),
+    func("chr", "chr(N)", "The character with code N."),
+    func("asc", "asc(S)", "The code of the first character of S."),
+    func("val", "val(S)", "The number a string holds."),
+    func("strupr", "strupr(S)", "S in upper case."),
+    func("strlwr", "strlwr(S)", "S in lower case."),
+    func(
+        "vstr",
+        "vstr(N, V, SEP, WIDTH, DECIMALS)",
+        "The first N components of V as text.",
+    ),
+    func(
+        "dimensions",
+        "dimensions(ARRAY)",
+        "How many dimensions an array has.",
+    ),
+    func(
+        "dimension_size",
+        "dimension_size(ARRAY, D)",
+        "The size of dimension D (1-based) of an array.",
+    ),
+    func("defined", "defined(NAME)", "1 when NAME is declared."),
+    func(
+        "bitwise_and",
+        "bitwise_and(A, B, …)",
+        "Bitwise and of integers.",
+    ),
+    func(
+        "bitwise_or",
+        "bitwise_or(A, B, …)",
+        "Bitwise or of integers.",
+    ),
+    func(
+        "bitwise_xor",
+        "bitwise_xor(A, B, …)",
+        "Bitwise exclusive or of integers.",
+    ),
+];
+
+/// The documentation of `word` as a keyword, function or constant (not a directive).
+pub fn lookup(word: &str) -> Option<&'static Doc> {
+    DOCS.iter()
+        .find(|d| d.name == word && d.kind != DocKind::Directive)
+}
+
+/// The documentation of directive `#word`.
+pub fn directive(word: &str) -> Option<&'static Doc> {
+    DOCS.iter()
+        .find(|d| d.name == word && d.kind == DocKind::Directive)
+}
+
+/// The hover text (Markdown) of a documented word.
+pub fn markdown(doc: &Doc) -> String {
+    let what = match doc.kind {
+        DocKind::Keyword => "keyword",
+        DocKind::Directive => "directive",
+        DocKind::Function => "built-in function",
+        DocKind::Constant => "built-in constant",
+    };
+    let mut s = format!("```rts\n{}\n```\n{} *({what})*", doc.syntax, doc.summary);
+    if !doc.implemented {
+        s.push_str("\n\nPOV-Ray keyword not implemented in rts yet.");
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::eval::BUILTIN_NAMES;
+    use crate::syntax::keywords::KEYWORDS;
+
+    #[test]
+    fn every_keyword_and_builtin_is_documented_once() {
+        for k in KEYWORDS {
+            assert!(
+                lookup(k).is_some(),
+                "keyword `{k}` has no entry in ide::docs::DOCS"
+            );
+        }
+        for (i, b) in BUILTIN_NAMES.iter().enumerate() {
+            let d = lookup(b).unwrap_or_else(|| panic!("built-in `{b}` has no entry"));
+            let want = if crate::eval::is_builtin_function(i) {
+                DocKind::Function
+            } else {
+                DocKind::Constant
+            };
+            assert_eq!(d.kind, want, "{b}");
+        }
+        let mut seen = std::collections::HashSet::new();
+        for d in DOCS {
+            assert!(
+                seen.insert((d.name, d.kind == DocKind::Directive)),
+                "`{}` twice",
+                d.name
+            );
+        }
+    }
+
+    /// Every implemented word the table documents is described in docs/language.md
+    /// too (written there in backticks, alone or as part of an example).
+    #[test]
+    fn implemented_words_appear_in_language_md() {
+        let md = include_str!("../../docs/language.md");
+        let words: std::collections::HashSet<&str> = md
+            .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .collect();
+        let missing: Vec<&str> = DOCS
+            .iter()
+            .filter(|d| d.implemented && !words.contains(d.name))
+            .map(|d| d.name)
+            .collect();
+        assert!(missing.is_empty(), "not in docs/language.md: {missing:?}");
+    }
+}
