@@ -121,6 +121,7 @@ impl<'a> Renderer<'a> {
                 }
             }
             let (width, height, show) = (self.width, self.height, self.show_progress);
+            let args = self.args;
             let cache = &mut self.build_cache;
             let mut job = || {
                 let t1 = Instant::now();
@@ -133,11 +134,14 @@ impl<'a> Renderer<'a> {
                     if show {
                         s.spawn(|| stats::progress_bar(&progress, &done));
                     }
-                    let r = rts::render::render_with(
+                    let r = super::path_opts::render_frame(
+                        args,
+                        &scene,
                         &world,
                         &RenderOptions { width, height },
                         &settings,
-                        Some(&progress),
+                        n,
+                        &progress,
                     );
                     done.store(true, std::sync::atomic::Ordering::Relaxed);
                     r

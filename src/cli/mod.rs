@@ -6,6 +6,7 @@ mod common;
 mod frame;
 mod lsp;
 mod manifest;
+mod path_opts;
 mod render;
 mod sequence;
 mod stats;

@@ -135,6 +135,9 @@ pub struct RenderArgs {
     /// Options for reading the scene.
     #[command(flatten)]
     pub scene: SceneArgs,
+    /// Path tracer options.
+    #[command(flatten)]
+    pub path: super::path_opts::PathArgs,
 }
 
 /// Why the options cannot be used.
@@ -360,6 +363,7 @@ pub fn run(args: &RenderArgs) -> i32 {
             return sequence::run(&mut r, &mut parsed, &base, &plan, tl, t_start);
         }
     }
+    let path_traced = super::path_opts::wanted(args, &probe);
     // A still: at --clock, at --frame's time, or the scene as first evaluated.
     let (instants, first, frame_no) = match (&timeline, args.frame) {
         (Some(tl), Some(n)) => (
@@ -392,6 +396,28 @@ pub fn run(args: &RenderArgs) -> i32 {
         Err(e) => return usage(e),
     };
     let t_parse = t_probe;
+    if path_traced && instants.len() == 1 {
+        // Progressive path tracing of a still (checkpoints, --time-limit, AOVs).
+        let scene = match first {
+            Some(s) => s,
+            None => match parsed.eval(&instants[0]) {
+                (Some(s), d) if !rts::diag::has_errors(&d) => s,
+                (_, d) => {
+                    common::print(&d, &parsed.sources, args.scene.message_format);
+                    return EXIT_ERRORS;
+                }
+            },
+        };
+        let settings = Settings {
+            frame: frame_no as u32,
+            ..r.settings
+        };
+        let size = (width, height);
+        return super::path_opts::run(
+            args, &scene, size, &output, format, &settings, t_start, t_parse,
+        )
+        .unwrap_or(EXIT_OK);
+    }
     let img = match r.image(&mut parsed, &instants, first, frame_no as u32) {
         Ok(i) => i,
         Err(code) => return code,

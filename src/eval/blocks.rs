@@ -59,6 +59,7 @@ pub(crate) const BLOCKS: &[&str] = &[
     "keyframes",
     "animation",
     "camera_path",
+    "path_tracing",
 ];
 
 /// POV-Ray blocks that a later release implements.
@@ -159,6 +160,10 @@ impl Evaluator<'_> {
             }
             "fog" => {
                 self.fog(&mut c)?;
+                return Ok(None);
+            }
+            "path_tracing" => {
+                self.path_tracing(&mut c)?;
                 return Ok(None);
             }
             "global_settings" => {

@@ -50,6 +50,7 @@ pub(crate) const GLOBAL_ITEMS: &[&str] = &[
     "max_trace_level",
     "adc_bailout",
     "noise_generator",
+    "path_tracing",
 ];
 
 /// An out-of-range camera value.

@@ -22,6 +22,7 @@ mod materials;
 mod mesh;
 mod mesh_cache;
 mod objects;
+mod path_tracing;
 mod patterns;
 mod scope;
 mod shapes;
@@ -347,7 +348,10 @@ impl Evaluator<'_> {
                         .with_help("add `global_settings { assumed_gamma 1.0 }` (POV-Ray 3.7 assumes 1.0 and warns too)"),
                 );
             }
-            if self.scene.lights.is_empty() && !self.scene.objects.is_empty() {
+            if self.scene.lights.is_empty()
+                && !self.scene.objects.is_empty()
+                && self.scene.global.path_tracing.is_none()
+            {
                 self.diags.push(
                     Diagnostic::warning(codes::NO_LIGHTS, Span::new(self.include_stack[0], 0, 0), "the scene has no light sources")
                         .with_help("add `light_source { <10, 10, -10> color rgb 1 }`; only ambient light will show"),

@@ -79,6 +79,7 @@ pub fn block_keywords(block: &str) -> Option<Vec<&'static str>> {
         "camera" => CAMERA_ITEMS.to_vec(),
         "light_source" => LIGHT_ITEMS.to_vec(),
         "global_settings" => GLOBAL_ITEMS.to_vec(),
+        "path_tracing" => super::path_tracing::PATH_ITEMS.to_vec(),
         "sky_sphere" => SKY_ITEMS.to_vec(),
         "fog" => FOG_ITEMS.to_vec(),
         "transform" => TRANSFORMS.to_vec(),

@@ -929,6 +929,31 @@ pub const DOCS: &[Doc] = &[
         "Stops tracing rays that contribute less than A.",
     ),
     kw(
+        "path_tracing",
+        "path_tracing { samples 64 max_depth 8 }",
+        "In global_settings (rts): render with the path tracer (docs/pathtracing.md).",
+    ),
+    kw(
+        "samples",
+        "samples N",
+        "path_tracing: samples per pixel (default 64).",
+    ),
+    kw(
+        "max_depth",
+        "max_depth N",
+        "path_tracing: longest path in segments, camera ray included (default 8).",
+    ),
+    kw(
+        "firefly_clamp",
+        "firefly_clamp X",
+        "path_tracing: largest channel value one sample may add (0: off).",
+    ),
+    kw(
+        "pixel_filter",
+        "pixel_filter \"box\" | \"gaussian\"",
+        "path_tracing: the reconstruction filter (default gaussian).",
+    ),
+    kw(
         "background",
         "background { COLOUR }",
         "The colour of rays that hit nothing.",

@@ -13,6 +13,7 @@ mod film;
 mod focal_blur;
 mod lights;
 mod passes;
+pub mod path;
 mod pigment;
 mod sampler;
 mod shade;

@@ -23,6 +23,9 @@ pub struct Sampler {
     dimension: u32,
     /// Generator for dimensions past the Sobol ones, made on first use.
     overflow: Option<Pcg64Mcg>,
+    /// Sobol dimensions `4k .. 4k + 4` computed together (`sobol_burley::sample_4d`
+    /// gives the same values as four `sample` calls, for a quarter of the work).
+    cached: [f32; 4],
 }
 
 impl Sampler {
@@ -36,6 +39,7 @@ impl Sampler {
             index,
             dimension: 0,
             overflow: None,
+            cached: [0.0; 4],
         }
     }
 
@@ -44,7 +48,10 @@ impl Sampler {
         let d = self.dimension;
         self.dimension += 1;
         if d < SOBOL_DIMENSIONS {
-            return f64::from(sobol_burley::sample(self.index, d, self.pixel_key));
+            if d.is_multiple_of(4) {
+                self.cached = sobol_burley::sample_4d(self.index, d / 4, self.pixel_key);
+            }
+            return f64::from(self.cached[d as usize % 4]);
         }
         let (key, index) = (self.pixel_key, self.index);
         let rng = self.overflow.get_or_insert_with(|| {
@@ -81,6 +88,15 @@ mod tests {
         assert_ne!(run(3, 4, 1), run(4, 3, 1));
         assert_ne!(run(3, 4, 1), run(3, 4, 2));
         assert!(run(1, 2, 0).iter().all(|v| (0.0..1.0).contains(v)));
+    }
+
+    #[test]
+    fn four_dimensions_at_once_equal_one_at_a_time() {
+        let mut s = Sampler::new(3, 1, 5, 6, 77);
+        for d in 0..SOBOL_DIMENSIONS {
+            let want = f64::from(sobol_burley::sample(77, d, s.pixel_key));
+            assert_eq!(s.next_f64(), want, "dimension {d}");
+        }
     }
 
     #[test]

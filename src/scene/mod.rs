@@ -11,6 +11,7 @@ mod camera;
 mod light;
 mod material;
 mod object;
+mod path;
 mod transform;
 
 pub use animation::{Timeline, DEFAULT_FPS};
@@ -22,6 +23,7 @@ pub use material::{
     PatternMods, Pigment, Reflection, Texture, Wave,
 };
 pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape};
+pub use path::{PathTracing, PixelFilter};
 pub use transform::Transform;
 
 use glam::DVec3;
@@ -74,6 +76,8 @@ pub struct GlobalSettings {
     pub adc_bailout: f64,
     /// `noise_generator`: 1, 2 or 3 (default 2); patterns declared after it use it.
     pub noise_generator: u8,
+    /// `path_tracing { … }` (rts): render with the path tracer, with these settings.
+    pub path_tracing: Option<PathTracing>,
 }
 
 impl Default for GlobalSettings {
@@ -84,6 +88,7 @@ impl Default for GlobalSettings {
             max_trace_level: 5,
             adc_bailout: 1.0 / 255.0,
             noise_generator: 2,
+            path_tracing: None,
         }
     }
 }

@@ -1,0 +1,258 @@
+//! The light transport: unidirectional path tracing with next-event estimation
+//! (every light source, plus one emitter chosen by power), multiple importance
+//! sampling (power heuristic) between emitter sampling and BSDF sampling, and
+//! Russian roulette.
+
+use super::bsdf::Bsdf;
+use super::emitters::Emitters;
+use super::environment::Environment;
+use super::lights;
+use crate::build::{Ray, RayKind, World};
+use crate::render::{sky, RayStats, Sampler};
+use glam::DVec3;
+
+/// Bounces after which Russian roulette may end a path.
+const ROULETTE_AFTER: u32 = 5;
+
+/// A world prepared for path tracing.
+pub struct PathScene<'a> {
+    /// The world.
+    pub world: &'a World,
+    /// Its emitting surfaces.
+    pub emitters: Emitters,
+    /// Longest path in segments (1: only what the camera sees directly).
+    pub max_depth: u32,
+    /// Whether any surface may let shadow rays through.
+    pub clear: bool,
+    /// The environment as a sampled light (`None`: black or uniform).
+    pub env: Option<Environment>,
+}
+
+impl<'a> PathScene<'a> {
+    /// Prepares `world`.
+    pub fn new(world: &'a World, max_depth: u32) -> PathScene<'a> {
+        PathScene {
+            world,
+            emitters: Emitters::new(world),
+            max_depth: max_depth.max(1),
+            clear: lights::any_transparent(world),
+            env: Environment::new(world),
+        }
+    }
+}
+
+/// One camera sample's result.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PathSample {
+    /// Light arriving along the camera ray.
+    pub radiance: DVec3,
+    /// Albedo of the first surface seen (the background where nothing is hit).
+    pub albedo: DVec3,
+    /// Shading normal of the first surface seen (zero where nothing is hit).
+    pub normal: DVec3,
+}
+
+/// Power heuristic weight of a strategy with density `a` against one with `b`.
+fn power(a: f64, b: f64) -> f64 {
+    let (a2, b2) = (a * a, b * b);
+    if a2 + b2 > 0.0 {
+        a2 / (a2 + b2)
+    } else {
+        0.0
+    }
+}
+
+/// Light arriving along `ray` (a camera ray), its random numbers from `sampler`.
+pub fn radiance(
+    sc: &PathScene,
+    ray: Ray,
+    sampler: &mut Sampler,
+    stats: &mut RayStats,
+) -> PathSample {
+    let world = sc.world;
+    let mut out = PathSample::default();
+    let mut ray = Ray::new(ray.origin, ray.dir.normalize());
+    let mut t_min = 0.0;
+    let mut kind = RayKind::Camera;
+    let mut beta = DVec3::ONE;
+    // Segments so far, counting the one being traced.
+    let mut depth = 1;
+    // The last scattering: whether it was a delta lobe, its pdf, its position.
+    let mut prev_delta = true;
+    let mut prev_pdf = 0.0;
+    let mut prev_p = ray.origin;
+    let mut first = true;
+    loop {
+        let Some(hit) = world.intersect(&ray, t_min, f64::INFINITY, kind) else {
+            let env = sky(world, ray.dir);
+            let w = match &sc.env {
+                Some(e) if !prev_delta => power(prev_pdf, e.pdf(ray.dir)),
+                _ => 1.0,
+            };
+            out.radiance += beta * w * env;
+            if first {
+                out.albedo = env;
+            }
+            break;
+        };
+        let s = world.surface(&ray, &hit);
+        let wo = -ray.dir;
+        if sc.emitters.is_looks_like(s.texture) {
+            // The visible stand-in of a light source: seen directly or in a mirror
+            // it shows as in the classic renderer; the light itself does the
+            // lighting, so it neither reflects nor emits for other paths.
+            if prev_delta {
+                let tex = &**s.texture;
+                let tp = s
+                    .texture_from_world
+                    .map_or(s.p, |m| m.transform_point3(s.p));
+                let c = super::super::pigment::evaluate_uv(&tex.pigment, tp, s.uv);
+                let glow = (tex.finish.ambient * world.global.ambient_light + tex.finish.emission)
+                    * c.rgb
+                    * (1.0 - c.filter - c.transmit).max(0.0);
+                out.radiance += beta * glow;
+                if first {
+                    out.albedo = c.rgb;
+                    out.normal = s.normal;
+                }
+            }
+            break;
+        }
+        let bsdf = Bsdf::at(&s, wo);
+        if first {
+            out.albedo = bsdf.albedo;
+            out.normal = bsdf.n;
+        }
+        // Emission found by BSDF sampling (or seen directly).
+        if bsdf.emission.max_element() > 0.0 {
+            let w = if prev_delta {
+                1.0
+            } else {
+                let pa = sc.emitters.pdf_area(world, hit.prim, hit.sub, s.p, prev_p);
+                if pa > 0.0 {
+                    let d2 = (s.p - prev_p).length_squared();
+                    let cos = s.geo_normal.dot(wo).abs().max(1e-12);
+                    power(prev_pdf, pa * d2 / cos)
+                } else {
+                    1.0
+                }
+            };
+            out.radiance += beta * w * bsdf.emission;
+        }
+        if depth >= sc.max_depth || bsdf.is_black() {
+            break;
+        }
+        // Next-event estimation.
+        if bsdf.has_smooth_lobes() {
+            for light in &world.lights {
+                let u = sampler.next_2d();
+                let Some(ls) = lights::sample(light, s.p, u) else {
+                    continue;
+                };
+                let (f, _) = bsdf.eval(wo, ls.wi);
+                if f.max_element() <= 0.0 {
+                    continue;
+                }
+                let vis = if light.shadowless {
+                    DVec3::ONE
+                } else {
+                    lights::transmittance(
+                        world,
+                        sc.clear,
+                        s.p,
+                        s.geo_normal,
+                        ls.wi,
+                        ls.dist,
+                        &mut stats.shadow,
+                    )
+                };
+                out.radiance += beta * f * ls.li * vis;
+            }
+            if let Some(env) = &sc.env {
+                let (wi, pdf_e) = env.sample(sampler.next_2d());
+                let (f, pdf_b) = bsdf.eval(wo, wi);
+                if f.max_element() > 0.0 && pdf_e > 0.0 {
+                    let vis = lights::transmittance(
+                        world,
+                        sc.clear,
+                        s.p,
+                        s.geo_normal,
+                        wi,
+                        f64::INFINITY,
+                        &mut stats.shadow,
+                    );
+                    if vis.max_element() > 0.0 {
+                        out.radiance +=
+                            beta * f * sky(world, wi) * vis * power(pdf_e, pdf_b) / pdf_e;
+                    }
+                }
+            }
+            if !sc.emitters.is_empty() {
+                let pick = sampler.next_f64();
+                let u = sampler.next_2d();
+                if let Some(ep) = sc.emitters.sample(world, s.p, pick, u) {
+                    let to = ep.p - s.p;
+                    let d2 = to.length_squared();
+                    let dist = d2.sqrt();
+                    let wi = to / dist;
+                    let cos_l = ep.n.dot(wi).abs();
+                    if cos_l > 1e-12 && ep.radiance.max_element() > 0.0 && dist.is_finite() {
+                        let (f, pdf_b) = bsdf.eval(wo, wi);
+                        if f.max_element() > 0.0 {
+                            let pdf_l = ep.pdf_area * d2 / cos_l;
+                            // Stop short of the emitter so it does not hide itself.
+                            let reach = dist * (1.0 - 1e-7) - crate::build::surface_offset(ep.p);
+                            let vis = lights::transmittance(
+                                world,
+                                sc.clear,
+                                s.p,
+                                s.geo_normal,
+                                wi,
+                                reach,
+                                &mut stats.shadow,
+                            );
+                            if vis.max_element() > 0.0 {
+                                out.radiance +=
+                                    beta * f * ep.radiance * vis * power(pdf_l, pdf_b) / pdf_l;
+                            }
+                        }
+                    }
+                }
+            } else {
+                // Keep the dimensions of later bounces in place.
+                sampler.next_f64();
+                sampler.next_2d();
+            }
+        }
+        // Continue the path.
+        let u = sampler.next_f64();
+        let u2 = sampler.next_2d();
+        let Some(bs) = bsdf.sample(wo, u, u2) else {
+            break;
+        };
+        beta *= bs.weight;
+        if !beta.is_finite() || beta.max_element() <= 0.0 {
+            break;
+        }
+        if !bs.pass {
+            first = false;
+            prev_delta = bs.delta;
+            prev_pdf = bs.pdf;
+            prev_p = s.p;
+            kind = RayKind::Reflected;
+        }
+        if depth >= ROULETTE_AFTER {
+            let q = beta.max_element().min(0.95);
+            if sampler.next_f64() >= q {
+                break;
+            }
+            beta /= q;
+        }
+        let (next, eps) = Ray::secondary(s.p, s.geo_normal, bs.wi);
+        stats.reflected += 1;
+        ray = next;
+        t_min = eps;
+        depth += 1;
+    }
+    out
+}
