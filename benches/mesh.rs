@@ -9,6 +9,9 @@
 //! After the plain-comparison slab test (2026-11-21, load ≈ 4 on 2 cores, so
 //! wall ≈ CPU): build 0.50 s / 0.55 CPU s (unchanged); primary rays
 //! 2.0 Mrays/s, 1.98 Mrays per CPU second (was 1.87); peak 103 MB.
+//! Idle machine after the 32-entry traversal stack (2026-11-22): build 0.45 s wall /
+//! 0.72 CPU s; primary rays 1,048,576 in 0.243 s wall = 4.3 Mrays/s (2.23 Mrays per
+//! CPU second); peak 110 MB.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use glam::DVec3;
