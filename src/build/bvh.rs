@@ -327,14 +327,53 @@ fn choose_split(order: &mut [u32], depth: usize, input: &Input, cb: &Box32) -> O
     )
 }
 
+/// Sets of at least this many primitives are bounded and binned in parallel
+/// chunks: near the root these passes are the build's critical path. The
+/// merges are exact (min, max, counts), so the tree does not depend on threads.
+const PAR_PASS: usize = 1 << 16;
+/// Chunk size of the parallel passes.
+const PAR_CHUNK: usize = 1 << 14;
+
 /// Bounds of the boxes and of the centroids of `order`, in one pass.
 fn spans(order: &[u32], input: &Input) -> (Box32, Box32) {
-    order
-        .iter()
-        .fold((Box32::EMPTY, Box32::EMPTY), |(b, c), &k| {
-            let k = k as usize;
-            (b.union(&input.boxes[k]), c.grow(input.cents[k]))
-        })
+    use rayon::prelude::*;
+    let seq = |part: &[u32]| {
+        part.iter()
+            .fold((Box32::EMPTY, Box32::EMPTY), |(b, c), &k| {
+                let k = k as usize;
+                (b.union(&input.boxes[k]), c.grow(input.cents[k]))
+            })
+    };
+    if order.len() < PAR_PASS {
+        return seq(order);
+    }
+    order.par_chunks(PAR_CHUNK).map(seq).reduce(
+        || (Box32::EMPTY, Box32::EMPTY),
+        |a, b| (a.0.union(&b.0), a.1.union(&b.1)),
+    )
+}
+
+/// Per axis, per bin: the bounds and count of the primitives whose centroids fall in it.
+type Bins = [[(Box32, u32); BINS]; 3];
+
+/// Bins `part` (centroid bin = (centroid - `min`) × `scale`, clamped), with the
+/// bounds of all its boxes.
+fn bin(part: &[u32], input: &Input, min: Vec3, scale: Vec3) -> (Bins, Box32) {
+    let mut bins = [[(Box32::EMPTY, 0u32); BINS]; 3];
+    let mut parent = Box32::EMPTY;
+    for &k in part {
+        let k = k as usize;
+        let b = &input.boxes[k];
+        parent = parent.union(b);
+        let rel = (input.cents[k] - min) * scale;
+        for axis in 0..3 {
+            let i = (rel[axis] as usize).min(BINS - 1);
+            let e = &mut bins[axis][i];
+            e.0 = e.0.union(b);
+            e.1 += 1;
+        }
+    }
+    (bins, parent)
 }
 
 fn leaf_or_inner(bounds: Box32, first: u32, count: u32) -> Node {
@@ -416,20 +455,28 @@ fn best_split(order: &[u32], input: &Input, cb: &Box32) -> Option<(usize, f32)> 
         if usable[1] { BINS as f32 / ext.y } else { 0.0 },
         if usable[2] { BINS as f32 / ext.z } else { 0.0 },
     );
-    let mut bins = [[(Box32::EMPTY, 0u32); BINS]; 3];
-    let mut parent = Box32::EMPTY;
-    for &k in order {
-        let k = k as usize;
-        let b = &input.boxes[k];
-        parent = parent.union(b);
-        let rel = (input.cents[k] - cb.min) * scale;
-        for axis in 0..3 {
-            let i = (rel[axis] as usize).min(BINS - 1);
-            let e = &mut bins[axis][i];
-            e.0 = e.0.union(b);
-            e.1 += 1;
-        }
-    }
+    let (bins, parent) = if order.len() < PAR_PASS {
+        bin(order, input, cb.min, scale)
+    } else {
+        use rayon::prelude::*;
+        order
+            .par_chunks(PAR_CHUNK)
+            .map(|part| bin(part, input, cb.min, scale))
+            .reduce(
+                || ([[(Box32::EMPTY, 0u32); BINS]; 3], Box32::EMPTY),
+                |(mut a, pa), (b, pb)| {
+                    for axis in 0..3 {
+                        for i in 0..BINS {
+                            a[axis][i] = (
+                                a[axis][i].0.union(&b[axis][i].0),
+                                a[axis][i].1 + b[axis][i].1,
+                            );
+                        }
+                    }
+                    (a, pa.union(&pb))
+                },
+            )
+    };
     let mut best: Option<(f32, usize, f32)> = None;
     for axis in (0..3).filter(|&a| usable[a]) {
         let bins = &bins[axis];
