@@ -36,7 +36,7 @@ pub fn primary_ray(
     }
     let focus = origin + dir * (camera.focal_distance / along);
     let (a, b) = sampler.next_2d();
-    let (lx, ly) = disc(a, b);
+    let (lx, ly) = super::sampler::concentric_disc(a, b);
     // Lens radius aperture / 4: measured against POV-Ray 3.7 (255 blur samples),
     // this gives the same width of blur; aperture / 2 blurs twice as much.
     let lens = 0.25
@@ -49,19 +49,21 @@ pub fn primary_ray(
 /// Origin and (unnormalised) direction of the pinhole ray at screen point (sx, sy).
 fn pinhole(camera: &Camera, sx: f64, sy: f64) -> Option<(DVec3, DVec3)> {
     let (loc, d, r, u) = (camera.location, camera.direction, camera.right, camera.up);
-    match camera.kind {
-        // The common cases need no unit vectors: keep their square roots off
-        // every camera ray.
-        CameraKind::Perspective => return Some((loc, d + sx * r + sy * u)),
-        CameraKind::Orthographic => return Some((loc + sx * r + sy * u, d)),
-        _ => {}
-    }
-    let (dn, rn, un) = (d.normalize(), r.normalize(), u.normalize());
-    let aspect = r.length() / u.length();
+    // Unit vectors and aspect only for the projections that use them: the common
+    // perspective and orthographic rays need no square roots.
+    let units = || {
+        (
+            d.normalize(),
+            r.normalize(),
+            u.normalize(),
+            r.length() / u.length(),
+        )
+    };
     Some(match camera.kind {
         CameraKind::Perspective => (loc, d + sx * r + sy * u),
         CameraKind::Orthographic => (loc + sx * r + sy * u, d),
         CameraKind::Fisheye { angle } => {
+            let (dn, rn, un, aspect) = units();
             let (mut x0, mut y0) = (2.0 * sx, 2.0 * sy);
             if aspect > 1.0 {
                 x0 *= aspect;
@@ -78,6 +80,7 @@ fn pinhole(camera: &Camera, sx: f64, sy: f64) -> Option<(DVec3, DVec3)> {
             (loc, st * phi.cos() * rn + st * phi.sin() * un + ct * dn)
         }
         CameraKind::UltraWideAngle { angle } => {
+            let (dn, rn, un, aspect) = units();
             let half = angle.to_radians() / 2.0;
             let lon = 2.0 * sx * half;
             let lat = 2.0 * sy * half / aspect;
@@ -87,6 +90,7 @@ fn pinhole(camera: &Camera, sx: f64, sy: f64) -> Option<(DVec3, DVec3)> {
             )
         }
         CameraKind::Panoramic => {
+            let (_, _, un, _) = units();
             let (a, b) = (std::f64::consts::PI * sx, std::f64::consts::PI * sy);
             if b.abs() >= std::f64::consts::FRAC_PI_2 - 1e-12 {
                 (loc, un * b.signum())
@@ -95,6 +99,7 @@ fn pinhole(camera: &Camera, sx: f64, sy: f64) -> Option<(DVec3, DVec3)> {
             }
         }
         CameraKind::Spherical { h_angle, v_angle } => {
+            let (dn, rn, un, _) = units();
             let lon = sx * h_angle.to_radians();
             let lat = sy * v_angle.to_radians();
             let (sl, cl) = lon.sin_cos();
@@ -102,21 +107,6 @@ fn pinhole(camera: &Camera, sx: f64, sy: f64) -> Option<(DVec3, DVec3)> {
             (loc, cb * sl * rn + sb * un + cb * cl * dn)
         }
     })
-}
-
-/// Maps the unit square onto the unit disc (concentric mapping).
-fn disc(a: f64, b: f64) -> (f64, f64) {
-    let (x, y) = (2.0 * a - 1.0, 2.0 * b - 1.0);
-    if x == 0.0 && y == 0.0 {
-        return (0.0, 0.0);
-    }
-    let q = std::f64::consts::FRAC_PI_4;
-    let (r, phi) = if x.abs() > y.abs() {
-        (x, q * (y / x))
-    } else {
-        (y, 2.0 * q - q * (x / y))
-    };
-    (r * phi.cos(), r * phi.sin())
 }
 
 #[cfg(test)]

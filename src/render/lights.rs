@@ -3,7 +3,7 @@
 
 use super::shade::TraceCtx;
 use crate::build::{Ray, World};
-use crate::scene::{AreaLight, Beam, Light, LightKind};
+use crate::scene::{AreaLight, Beam, LightKind};
 use glam::DVec3;
 use std::cell::Cell;
 
@@ -33,17 +33,19 @@ pub struct Incident {
     pub colour: DVec3,
 }
 
-/// The light `light` brings to point `p` with geometric normal `geo_n` and shading
-/// normal `n` (facing the viewer); `None` when the point faces away, lies outside
-/// the beam or is in full shadow.
+/// The light `world.lights[index]` brings to point `p` with geometric normal
+/// `geo_n` and shading normal `n` (facing the viewer); `None` when the point faces
+/// away, lies outside the beam or is in full shadow (or there is no such light).
+/// The index also picks the light's shadow hint.
 pub fn incident(
     world: &World,
-    light: &Light,
+    index: usize,
     p: DVec3,
     geo_n: DVec3,
     n: DVec3,
     ctx: &mut TraceCtx,
 ) -> Option<Incident> {
+    let light = world.lights.get(index)?;
     // Measured in POV-Ray 3.7: a `shadowless` spotlight or cylinder light loses its
     // beam (a cylinder light still shines along its axis).
     let kind = if light.shadowless {
@@ -83,16 +85,11 @@ pub fn incident(
         return None;
     }
     if !light.shadowless {
-        let slot = world
-            .lights
-            .iter()
-            .position(|l| std::ptr::eq(l, light))
-            .unwrap_or(0);
         let seen = match (&light.area, along_axis) {
             (Some(area), false) => {
-                area_visibility(world, area, light.location, p, geo_n, slot, ctx)
+                area_visibility(world, area, light.location, p, geo_n, index, ctx)
             }
-            _ => shadow(world, p, geo_n, dir, dist, slot, ctx),
+            _ => shadow(world, p, geo_n, dir, dist, index, ctx),
         };
         colour *= seen;
         if colour == DVec3::ZERO {
@@ -252,7 +249,7 @@ fn area_visibility(
 
 /// The area light's axes turned to lie across the direction `d` to the light,
 /// keeping their lengths.
-fn oriented_axes(a1: DVec3, a2: DVec3, d: DVec3) -> (DVec3, DVec3) {
+pub(super) fn oriented_axes(a1: DVec3, a2: DVec3, d: DVec3) -> (DVec3, DVec3) {
     let (l1, l2) = (a1.length(), a2.length());
     let mut u = d.cross(a2);
     if u.length_squared() < 1e-12 * l2 * l2 {

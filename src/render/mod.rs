@@ -133,16 +133,10 @@ pub fn render(world: &World, opts: &RenderOptions) -> Film {
     render_with(world, opts, &Settings::default(), None).film
 }
 
-/// Renders `world` as `settings` say. `progress`, when given, is updated as rows
-/// finish.
-pub fn render_with(
-    world: &World,
-    opts: &RenderOptions,
-    settings: &Settings,
-    progress: Option<&Progress>,
-) -> Rendered {
-    let (w, h) = (opts.width, opts.height);
-    let crop = settings.crop.map_or(
+/// The region `settings.crop` asks for, clamped to a `w`×`h` image (the whole
+/// image without a crop).
+pub fn resolve_crop(settings: &Settings, w: u32, h: u32) -> Crop {
+    settings.crop.map_or(
         Crop {
             x0: 0,
             y0: 0,
@@ -155,7 +149,19 @@ pub fn render_with(
             x1: c.x1.min(w).max(c.x0.min(w)),
             y1: c.y1.min(h).max(c.y0.min(h)),
         },
-    );
+    )
+}
+
+/// Renders `world` as `settings` say. `progress`, when given, is updated as rows
+/// finish.
+pub fn render_with(
+    world: &World,
+    opts: &RenderOptions,
+    settings: &Settings,
+    progress: Option<&Progress>,
+) -> Rendered {
+    let (w, h) = (opts.width, opts.height);
+    let crop = resolve_crop(settings, w, h);
     let (cw, ch) = (crop.x1 - crop.x0, crop.y1 - crop.y0);
     let sampling = settings.sampling;
     let r = Renderer {

@@ -66,6 +66,23 @@ impl Sampler {
     }
 }
 
+/// A point (`a`, `b`) of the unit square mapped onto the unit disc by Shirley and
+/// Chiu's concentric mapping (strata stay compact, so stratified lens and light
+/// samples stay stratified).
+pub(crate) fn concentric_disc(a: f64, b: f64) -> (f64, f64) {
+    let (x, y) = (2.0 * a - 1.0, 2.0 * b - 1.0);
+    if x == 0.0 && y == 0.0 {
+        return (0.0, 0.0);
+    }
+    let q = std::f64::consts::FRAC_PI_4;
+    let (r, phi) = if x.abs() > y.abs() {
+        (x, q * (y / x))
+    } else {
+        (y, 2.0 * q - q * (x / y))
+    };
+    (r * phi.cos(), r * phi.sin())
+}
+
 /// SplitMix64's finaliser: a bijective 64-bit mix.
 fn mix(mut z: u64) -> u64 {
     z = z.wrapping_add(0x9e37_79b9_7f4a_7c15);

@@ -154,7 +154,7 @@ fn shade(
         let colour = c.rgb;
         let opacity = (1.0 - c.filter - c.transmit).max(0.0);
         let mut layer = (f.ambient * world.global.ambient_light + f.emission) * colour * opacity;
-        for light in &world.lights {
+        for light in 0..world.lights.len() {
             if let Some(inc) = lights::incident(world, light, p, geo_n, n, ctx) {
                 layer += direct(
                     f,

@@ -5,7 +5,8 @@
 //! POV-Ray). Area lights are sampled as the continuous rectangle (or disc, with
 //! `circular`) their grid spans. Light sources are never hit by rays.
 
-use super::super::lights::{cylinder_attenuation, fade, spot_attenuation};
+use super::super::lights::{cylinder_attenuation, fade, oriented_axes, spot_attenuation};
+use super::super::sampler::concentric_disc;
 use crate::build::{surface_offset, Ray, RayKind, World};
 use crate::scene::{Light, LightKind};
 use glam::DVec3;
@@ -21,35 +22,6 @@ pub struct LightSample {
     pub dist: f64,
     /// What `f · cos` is multiplied by: π × colour × fading × beam.
     pub li: DVec3,
-}
-
-/// A point on the square mapped to the unit disc (concentric mapping).
-fn concentric(u: f64, v: f64) -> (f64, f64) {
-    let (a, b) = (2.0 * u - 1.0, 2.0 * v - 1.0);
-    if a == 0.0 && b == 0.0 {
-        return (0.0, 0.0);
-    }
-    let (r, phi) = if a.abs() > b.abs() {
-        (a, PI / 4.0 * (b / a))
-    } else {
-        (b, PI / 2.0 - PI / 4.0 * (a / b))
-    };
-    (r * phi.cos(), r * phi.sin())
-}
-
-/// The area light's axes turned across `d` (unit, towards the light), keeping
-/// their lengths (`orient`).
-fn oriented(a1: DVec3, a2: DVec3, d: DVec3) -> (DVec3, DVec3) {
-    let (l1, l2) = (a1.length(), a2.length());
-    let mut u = d.cross(a2);
-    if u.length_squared() < 1e-12 * l2 * l2 {
-        u = d.cross(a1);
-    }
-    if u.length_squared() < 1e-24 {
-        u = d.any_orthonormal_vector();
-    }
-    let u = u.normalize();
-    (u * l1, d.cross(u) * l2)
 }
 
 /// Light `light` at point `p`, with the point on an area light chosen by `u`.
@@ -68,10 +40,10 @@ pub fn sample(light: &Light, p: DVec3, u: (f64, f64)) -> Option<LightSample> {
         if let Some(area) = &light.area {
             let (mut a1, mut a2) = (area.axis1, area.axis2);
             if area.orient {
-                (a1, a2) = oriented(a1, a2, (light.location - p).normalize_or_zero());
+                (a1, a2) = oriented_axes(a1, a2, (light.location - p).normalize_or_zero());
             }
             let (x, y) = if area.circular {
-                let (x, y) = concentric(u.0, u.1);
+                let (x, y) = concentric_disc(u.0, u.1);
                 (0.5 * x, 0.5 * y)
             } else {
                 (u.0 - 0.5, u.1 - 0.5)
@@ -244,7 +216,7 @@ mod tests {
     fn concentric_maps_into_the_disc() {
         for i in 0..=10 {
             for j in 0..=10 {
-                let (x, y) = concentric(f64::from(i) / 10.0, f64::from(j) / 10.0);
+                let (x, y) = concentric_disc(f64::from(i) / 10.0, f64::from(j) / 10.0);
                 assert!(x * x + y * y <= 1.0 + 1e-12);
             }
         }

@@ -75,23 +75,7 @@ pub struct Accum {
     pub normal: Vec<DVec3>,
 }
 
-/// The region `settings.crop` asks for, clamped to a `w`×`h` image.
-pub fn resolve_crop(settings: &Settings, w: u32, h: u32) -> Crop {
-    settings.crop.map_or(
-        Crop {
-            x0: 0,
-            y0: 0,
-            x1: w,
-            y1: h,
-        },
-        |c| Crop {
-            x0: c.x0.min(w),
-            y0: c.y0.min(h),
-            x1: c.x1.min(w).max(c.x0.min(w)),
-            y1: c.y1.min(h).max(c.y0.min(h)),
-        },
-    )
-}
+pub use super::resolve_crop;
 
 impl Accum {
     /// Empty sums over `crop`.
