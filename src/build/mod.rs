@@ -14,6 +14,7 @@ pub mod quartic;
 mod ray;
 mod shape;
 pub mod shapes;
+mod transparency;
 
 pub use aabb::Aabb;
 pub use bvh::Bvh;
@@ -76,6 +77,9 @@ pub struct World {
     pub bvh: Bvh,
     /// Bounds of all bounded primitives (empty when there are none).
     pub bounds: Aabb,
+    /// Whether any surface may let light through (filter, transmit or an image
+    /// map in any texture layer): when not, a blocked shadow ray is dark.
+    pub transparent: bool,
 }
 
 /// Flattens `scene` and builds its acceleration structure. Unions are flattened
@@ -131,6 +135,7 @@ pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
         global: scene.global.clone(),
         atmosphere: scene.atmosphere.clone(),
         bounds: bvh.bounds(),
+        transparent: transparency::any_transparent(&prims),
         primitives: prims,
         unbounded,
         bvh,

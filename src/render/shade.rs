@@ -288,6 +288,9 @@ pub fn shadow_filter(world: &World, ray: &Ray, t_min: f64, t_max: f64, hint: &mu
     if !world.occluded_hinted(ray, t_min, t_max, hint) {
         return DVec3::ONE;
     }
+    if !world.transparent {
+        return DVec3::ZERO;
+    }
     let mut through = DVec3::ONE;
     let mut t0 = t_min;
     for _ in 0..64 {

@@ -35,7 +35,7 @@ impl<'a> PathScene<'a> {
             world,
             emitters: Emitters::new(world),
             max_depth: max_depth.max(1),
-            clear: lights::any_transparent(world),
+            clear: world.transparent,
             env: Environment::new(world),
         }
     }

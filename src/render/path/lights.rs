@@ -89,42 +89,11 @@ pub fn sample(light: &Light, p: DVec3, u: (f64, f64)) -> Option<LightSample> {
     })
 }
 
-/// Whether any texture of `world` may let light through (a pigment with filter or
-/// transmit anywhere, or an image map): when none does, a blocked shadow ray is
-/// simply dark.
-pub fn any_transparent(world: &World) -> bool {
-    use crate::build::PrimShape;
-    use crate::scene::{Pattern, PatternMap, Pigment, Texture};
-    fn pigment(p: &Pigment) -> bool {
-        match &p.pattern {
-            Pattern::Solid(c) => c.filter + c.transmit > 0.0,
-            Pattern::Checker(pair) => pair.iter().any(pigment),
-            Pattern::Image(_) => true,
-            Pattern::Mapped(m) => match &m.map {
-                PatternMap::Colours(e) => e.iter().any(|(_, c)| c.filter + c.transmit > 0.0),
-                PatternMap::Pigments(e) => e.iter().any(|(_, p)| pigment(p)),
-                PatternMap::List(l) => l.iter().any(pigment),
-            },
-        }
-    }
-    fn texture(t: &Texture) -> bool {
-        pigment(&t.pigment) || t.under.as_deref().is_some_and(texture)
-    }
-    world.primitives.iter().any(|p| {
-        texture(&p.texture)
-            || match &p.shape {
-                PrimShape::Csg(c) => c.leaves.iter().any(|l| texture(&l.texture)),
-                PrimShape::Mesh(m) => m.data.textures.iter().any(|t| texture(t)),
-                _ => false,
-            }
-    })
-}
-
 /// How much light passes from `p` (geometric normal `geo_n`) along unit `wi` for
 /// `dist`: 1 on a clear path, 0 behind an opaque or refracting surface, and the
 /// product of `filter · colour + transmit` of the `ior 1` transparent surfaces
 /// crossed (those the path tracer also passes straight through); `clear`: whether
-/// the world has any such surface ([`any_transparent`]). `shadow_rays` counts the
+/// the world has any such surface ([`World::transparent`]). `shadow_rays` counts the
 /// rays traced.
 pub fn transmittance(
     world: &World,
