@@ -157,11 +157,17 @@ pub fn perturb(normal: &Normal, n: DVec3, p: DVec3, texture_from_world: Option<&
             .as_ref()
             .map(|x| x.inverse.transform_vector3(DVec3::ONE).length() / 3f64.sqrt())
             .unwrap_or(1.0);
-    let h = 1e-4 / scale.max(1e-12);
-    let mut g = DVec3::ZERO;
-    for (i, axis) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {
-        g[i] = (f(p + axis * h) - f(p - axis * h)) / (2.0 * h);
-    }
+    let g = match analytic_slope(normal, p, texture_from_world) {
+        Some(g) => g,
+        None => {
+            let h = 1e-4 / scale.max(1e-12);
+            let mut g = DVec3::ZERO;
+            for (i, axis) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {
+                g[i] = (f(p + axis * h) - f(p - axis * h)) / (2.0 * h);
+            }
+            g
+        }
+    };
     // The slope in the pattern's own units.
     let g = g / scale.max(1e-12);
     let tangential = g - g.dot(n) * n;
@@ -179,6 +185,34 @@ pub fn perturb(normal: &Normal, n: DVec3, p: DVec3, texture_from_world: Option<&
     } else {
         n
     }
+}
+
+/// The world-space gradient of `normal`'s height field at world point `p`, when
+/// the pattern has an analytic one ([`patterns::height_gradient`]): the
+/// pattern-space gradient carried back through the transposed linear part of the
+/// world → pattern map.
+fn analytic_slope(normal: &Normal, p: DVec3, texture_from_world: Option<&DMat4>) -> Option<DVec3> {
+    if normal.kind.is_list() {
+        return None;
+    }
+    let mut q = p;
+    let mut to_pattern: Option<DMat4> = None;
+    if let Some(m) = texture_from_world {
+        q = m.transform_point3(q);
+        to_pattern = Some(*m);
+    }
+    if let Some(x) = &normal.transform {
+        q = x.inverse.transform_point3(q);
+        to_pattern = Some(match to_pattern {
+            Some(m) => x.inverse * m,
+            None => x.inverse,
+        });
+    }
+    let g = patterns::height_gradient(&normal.kind, q, &normal.mods)?;
+    Some(match to_pattern {
+        Some(m) => m.transpose().transform_vector3(g),
+        None => g,
+    })
 }
 
 #[cfg(test)]
@@ -244,6 +278,66 @@ mod tests {
             transform: None,
         };
         assert!((evaluate(&pig, DVec3::new(2.3, 0.0, 0.0)).rgb.x - 0.3).abs() < 1e-9);
+    }
+
+    #[test]
+    fn analytic_slopes_equal_differences() {
+        let tr = Transform::scale(DVec3::new(0.3, 0.7, 0.2))
+            .then(&Transform::rotate(DVec3::new(20.0, 35.0, -10.0)))
+            .then(&Transform::translate(DVec3::new(0.4, -1.0, 2.0)));
+        let tex = Transform::rotate(DVec3::new(0.0, 60.0, 15.0))
+            .then(&Transform::scale(DVec3::splat(1.7)));
+        let kinds = [
+            PatternKind::Bumps,
+            PatternKind::Dents,
+            PatternKind::Wrinkles,
+            PatternKind::Ripples,
+            PatternKind::Waves,
+            PatternKind::Gradient(DVec3::new(0.2, 1.0, 0.5)),
+        ];
+        for kind in kinds {
+            for freq in [1.0, 3.0] {
+                let nrm = Normal {
+                    kind: kind.clone(),
+                    mods: PatternMods {
+                        frequency: freq,
+                        ..PatternMods::default()
+                    },
+                    bump_size: 1.0,
+                    transform: Some(Arc::new(tr.clone())),
+                };
+                for i in 0..50 {
+                    let p = DVec3::new(
+                        i as f64 * 0.137 - 3.0,
+                        (i % 5) as f64 * 0.29,
+                        (i % 11) as f64 * -0.31,
+                    );
+                    let Some(g) = analytic_slope(&nrm, p, Some(&tex.inverse)) else {
+                        // Noise patterns with a frequency go by differences.
+                        assert!(
+                            freq != 1.0 && matches!(kind, PatternKind::Bumps | PatternKind::Dents)
+                        );
+                        continue;
+                    };
+                    let f = |q: DVec3| {
+                        patterns::height(
+                            &nrm.kind,
+                            tr.inverse.transform_point3(tex.inverse.transform_point3(q)),
+                            &nrm.mods,
+                        )
+                    };
+                    let h = 1e-6;
+                    for (k, axis) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {
+                        let fd = (f(p + axis * h) - f(p - axis * h)) / (2.0 * h);
+                        assert!(
+                            (fd - g[k]).abs() < 1e-4 * (1.0 + fd.abs()),
+                            "{kind:?} freq {freq} at {p}: axis {k} {fd} vs {}",
+                            g[k]
+                        );
+                    }
+                }
+            }
+        }
     }
 
     #[test]

@@ -89,6 +89,54 @@ pub fn signed_noise(p: DVec3) -> f64 {
     )
 }
 
+/// [`signed_noise`] and its gradient, computed together analytically (one lattice
+/// walk instead of the six a central difference needs).
+pub fn signed_noise_grad(p: DVec3) -> (f64, DVec3) {
+    let f = p.floor();
+    let (i, j, k) = (f.x as i64, f.y as i64, f.z as i64);
+    let d = p - f;
+    let (u, v, w) = (fade(d.x), fade(d.y), fade(d.z));
+    let (du, dv, dw) = (fade_slope(d.x), fade_slope(d.y), fade_slope(d.z));
+    let mut value = 0.0;
+    let mut grad = DVec3::ZERO;
+    for corner in 0..8 {
+        let (ci, cj, ck) = (corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+        let h = GRAD[hash(i + ci, j + cj, k + ck) & 15];
+        let g = h[0] * (d.x - ci as f64) + h[1] * (d.y - cj as f64) + h[2] * (d.z - ck as f64);
+        // Trilinear weights and their slopes along each axis.
+        let (wx, sx) = if ci == 1 { (u, du) } else { (1.0 - u, -du) };
+        let (wy, sy) = if cj == 1 { (v, dv) } else { (1.0 - v, -dv) };
+        let (wz, sz) = if ck == 1 { (w, dw) } else { (1.0 - w, -dw) };
+        let weight = wx * wy * wz;
+        value += weight * g;
+        grad += DVec3::new(
+            sx * wy * wz * g + weight * h[0],
+            wx * sy * wz * g + weight * h[1],
+            wx * wy * sz * g + weight * h[2],
+        );
+    }
+    (value, grad)
+}
+
+/// The slope of [`fade`]: `30 t² (t - 1)²`.
+#[inline]
+fn fade_slope(t: f64) -> f64 {
+    let s = t * (t - 1.0);
+    30.0 * s * s
+}
+
+/// The gradient of [`noise`] at `p` (zero where `noise` is clipped to 0 or 1).
+pub fn noise_grad(p: DVec3, generator: u8) -> (f64, DVec3) {
+    let gain = if generator == 1 { GAIN * 2.3 } else { GAIN };
+    let (s, g) = signed_noise_grad(p);
+    let v = 0.5 + gain * s;
+    if (0.0..=1.0).contains(&v) {
+        (v, g * gain)
+    } else {
+        (v.clamp(0.0, 1.0), DVec3::ZERO)
+    }
+}
+
 /// Gain that spreads the signed noise over POV-Ray's range (measured on bozo
 /// histograms: POV-Ray's generator 2 fills [0, 1] with a soft peak at 0.5).
 const GAIN: f64 = 0.52;
@@ -159,6 +207,24 @@ mod tests {
             "mean {}",
             sum / n as f64
         );
+    }
+
+    #[test]
+    fn analytic_gradient_matches_differences() {
+        for i in 0..200 {
+            let p = DVec3::new(
+                i as f64 * 0.377 - 20.0,
+                (i % 17) as f64 * 0.61,
+                (i % 7) as f64 * -1.3,
+            );
+            let (v, g) = signed_noise_grad(p);
+            assert!((v - signed_noise(p)).abs() < 1e-12);
+            let h = 1e-6;
+            for (k, axis) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {
+                let fd = (signed_noise(p + axis * h) - signed_noise(p - axis * h)) / (2.0 * h);
+                assert!((fd - g[k]).abs() < 1e-6, "{p} axis {k}: {fd} vs {}", g[k]);
+            }
+        }
     }
 
     #[test]

@@ -2,7 +2,7 @@
 //! (or, for list patterns, to an entry index). Definitions follow the POV-Ray 3.7
 //! manual; the geometric ones were checked pixel by pixel against POV-Ray renders.
 
-use super::noise::{noise, turbulence, turbulence_vec};
+use super::noise::{noise, noise_grad, turbulence, turbulence_vec};
 use crate::scene::{PatternKind, PatternMods, Wave};
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
@@ -115,15 +115,22 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
             }
             // Spread like POV-Ray's (measured contrast of a grey-mapped render).
             let spread = if matches!(kind, PatternKind::Waves) {
-                0.5
+                WAVES_SPREAD
             } else {
-                1.25
+                RIPPLES_SPREAD
             };
             (0.5 + spread * sum).clamp(0.0, 1.0)
         }
         PatternKind::Checker | PatternKind::Hexagon | PatternKind::Brick { .. } => 0.0,
     }
 }
+
+/// Spread of the `waves` sum around 0.5 (measured contrast of POV-Ray's
+/// grey-mapped render).
+const WAVES_SPREAD: f64 = 0.5;
+
+/// Spread of the `ripples` sum around 0.5 (as [`WAVES_SPREAD`]).
+const RIPPLES_SPREAD: f64 = 1.25;
 
 /// Spread of the wrinkles sum around 0.5 (fitted to the contrast of POV-Ray's
 /// grey-mapped wrinkles).
@@ -211,6 +218,58 @@ pub fn height(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
         return sum;
     }
     value(kind, p, m)
+}
+
+/// The gradient of [`height`] at `p`, computed analytically for the patterns
+/// normals mostly use (`bumps`, `bozo`, `dents`, `wrinkles`, `ripples`, `waves`,
+/// `gradient`) without turbulence; `None` for the others, whose slope is taken by
+/// differences. Equal to the differences of [`height`] (a unit test checks).
+pub fn height_gradient(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<DVec3> {
+    if m.turbulence != DVec3::ZERO || m.wave != Wave::Ramp {
+        return None;
+    }
+    let plain = m.frequency == 1.0 && m.phase == 0.0;
+    let g = m.noise_generator;
+    match kind {
+        PatternKind::Wrinkles => {
+            let mut sum = DVec3::ZERO;
+            let mut freq = 1.0;
+            for _ in 0..10 {
+                sum += noise_grad(p * freq, g).1 / freq;
+                freq *= 2.0;
+            }
+            Some(sum)
+        }
+        PatternKind::Bozo | PatternKind::Bumps if plain => Some(noise_grad(p, g).1),
+        PatternKind::Dents if plain => {
+            let (n, d) = noise_grad(p, g);
+            Some(3.0 * n * n * d)
+        }
+        PatternKind::Ripples | PatternKind::Waves => {
+            let waves = matches!(kind, PatternKind::Waves);
+            let mut sum = 0.0;
+            let mut slope = DVec3::ZERO;
+            for (i, c) in CENTRES.iter().enumerate() {
+                let r = p - *c;
+                let d = r.length();
+                let f = if waves { 1.0 + (i as f64) / 10.0 } else { 1.0 };
+                let (sin, cos) = (TAU * (d * m.frequency * f + m.phase)).sin_cos();
+                sum += sin / 10.0;
+                if d > 0.0 {
+                    slope += r * (cos * TAU * m.frequency * f / (10.0 * d));
+                }
+            }
+            let spread = if waves { WAVES_SPREAD } else { RIPPLES_SPREAD };
+            let v = 0.5 + spread * sum;
+            Some(if (0.0..=1.0).contains(&v) {
+                slope * spread
+            } else {
+                DVec3::ZERO
+            })
+        }
+        PatternKind::Gradient(dir) => Some(*dir * m.frequency),
+        _ => None,
+    }
 }
 
 #[cfg(test)]
