@@ -219,7 +219,7 @@ impl Csg {
     /// The nearest surface crossing in `(t_min, t_max)`: distance, leaf, part.
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<ShapeHit> {
         let inv = ray.dir.recip();
-        let mut all: Vec<ShapeHit> = Vec::new();
+        let mut all = Crossings::default();
         for (i, l) in self.leaves.iter().enumerate() {
             if !l.surface {
                 continue;
@@ -237,8 +237,10 @@ impl Csg {
                 all.push((t, i as u32, sub))
             });
         }
+        let all = all.as_mut_slice();
         all.sort_by(|a, b| a.0.total_cmp(&b.0));
-        all.into_iter()
+        all.iter()
+            .copied()
             .find(|&(t, leaf, _)| self.keeps(&self.root, leaf, ray.at(t)) == Some(true))
     }
 
@@ -271,6 +273,48 @@ impl Csg {
                 .iter()
                 .map(|c| self.node_bounds(c))
                 .fold(self.node_bounds(object), meet),
+        }
+    }
+}
+
+/// The crossings of one ray with the leaves: on the stack for the usual few,
+/// spilled to the heap past [`Crossings::INLINE`].
+struct Crossings {
+    inline: [ShapeHit; Crossings::INLINE],
+    len: usize,
+    spilled: Vec<ShapeHit>,
+}
+
+impl Default for Crossings {
+    fn default() -> Self {
+        Crossings {
+            inline: [(0.0, 0, 0); Crossings::INLINE],
+            len: 0,
+            spilled: Vec::new(),
+        }
+    }
+}
+
+impl Crossings {
+    const INLINE: usize = 16;
+
+    fn push(&mut self, h: ShapeHit) {
+        if self.len < Self::INLINE {
+            self.inline[self.len] = h;
+            self.len += 1;
+        } else {
+            if self.spilled.is_empty() {
+                self.spilled.extend_from_slice(&self.inline);
+            }
+            self.spilled.push(h);
+        }
+    }
+
+    fn as_mut_slice(&mut self) -> &mut [ShapeHit] {
+        if self.spilled.is_empty() {
+            &mut self.inline[..self.len]
+        } else {
+            &mut self.spilled
         }
     }
 }

@@ -80,6 +80,8 @@ pub struct World {
     /// Whether any surface may let light through (filter, transmit or an image
     /// map in any texture layer): when not, a blocked shadow ray is dark.
     pub transparent: bool,
+    /// Per primitive, whether it may let light through (see `transparent`).
+    pub translucent: Vec<bool>,
 }
 
 /// Flattens `scene` and builds its acceleration structure. Unions are flattened
@@ -128,6 +130,7 @@ pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
         .collect();
     let bvh = Bvh::build(&items);
     let unbounded = (items.len() as u32..prims.len() as u32).collect();
+    let translucent = transparency::translucent(&prims);
     World {
         camera: scene.camera,
         lights: scene.lights.clone(),
@@ -135,11 +138,23 @@ pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
         global: scene.global.clone(),
         atmosphere: scene.atmosphere.clone(),
         bounds: bvh.bounds(),
-        transparent: transparency::any_transparent(&prims),
+        transparent: translucent.iter().any(|&t| t),
+        translucent,
         primitives: prims,
         unbounded,
         bvh,
     }
+}
+
+/// What [`World::shadow_blockers`] found on a shadow ray.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Blockers {
+    /// Nothing: the light arrives whole.
+    None,
+    /// A surface that lets no light through: the light is blocked.
+    Opaque,
+    /// Only surfaces that may let light through: their filters decide.
+    Translucent,
 }
 
 /// What a child takes from its enclosing objects.
@@ -605,6 +620,58 @@ impl World {
             *hint = i;
         }
         found.is_some()
+    }
+
+    /// What blocks a shadow ray in `(t_min, t_max)`: nothing, something opaque
+    /// (see [`World::translucent`]; the ray is dark whatever else it meets), or
+    /// only surfaces that may let light through. One traversal; `hint` as in
+    /// [`World::occluded_hinted`] (an opaque blocker).
+    pub fn shadow_blockers(&self, ray: &Ray, t_min: f64, t_max: f64, hint: &mut u32) -> Blockers {
+        let translucent = |i: u32| self.translucent.get(i as usize).copied().unwrap_or(true);
+        let mut seen_translucent = false;
+        let mut blocks = |i: u32| {
+            let p = &self.primitives[i as usize];
+            if !RayKind::Shadow.sees(&p.flags) {
+                return false;
+            }
+            let see_through = translucent(i);
+            if see_through && seen_translucent {
+                return false;
+            }
+            if p.intersect(ray, t_min, t_max).is_none() {
+                return false;
+            }
+            seen_translucent |= see_through;
+            !see_through
+        };
+        let mut opaque = (*hint as usize) < self.primitives.len() && blocks(*hint);
+        if !opaque {
+            if let Some(&i) = self.unbounded.iter().find(|&&i| blocks(i)) {
+                *hint = i;
+                opaque = true;
+            }
+        }
+        if !opaque {
+            let mut found = None;
+            self.bvh.traverse(ray, t_min, t_max, |i, t_max| {
+                if blocks(i) {
+                    found = Some(i);
+                    return None;
+                }
+                Some(t_max)
+            });
+            if let Some(i) = found {
+                *hint = i;
+                opaque = true;
+            }
+        }
+        if opaque {
+            Blockers::Opaque
+        } else if seen_translucent {
+            Blockers::Translucent
+        } else {
+            Blockers::None
+        }
     }
 
     /// Whether world point `p` is inside any object, by POV-Ray's rules (see

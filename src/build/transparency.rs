@@ -1,13 +1,13 @@
-//! Whether a world has any surface that lets light through: when none does, a
-//! blocked shadow ray is simply dark, and both renderers skip walking its hits.
+//! Which surfaces may let light through: a shadow ray blocked by any other
+//! surface is simply dark, and both renderers skip walking its hits.
 
 use super::{PrimShape, Primitive};
 use crate::scene::{Pattern, PatternMap, Pigment, Texture};
 
-/// Whether any texture of `primitives` (any layer, CSG leaves and mesh texture
-/// lists included) may let light through: a pigment with filter or transmit
-/// anywhere, or an image map.
-pub(super) fn any_transparent(primitives: &[Primitive]) -> bool {
+/// For each of `primitives`, whether any of its textures (any layer, CSG leaves
+/// and mesh texture lists included) may let light through: a pigment with filter
+/// or transmit anywhere, or an image map.
+pub(super) fn translucent(primitives: &[Primitive]) -> Vec<bool> {
     fn pigment(p: &Pigment) -> bool {
         match &p.pattern {
             Pattern::Solid(c) => c.filter + c.transmit > 0.0,
@@ -23,12 +23,15 @@ pub(super) fn any_transparent(primitives: &[Primitive]) -> bool {
     fn texture(t: &Texture) -> bool {
         pigment(&t.pigment) || t.under.as_deref().is_some_and(texture)
     }
-    primitives.iter().any(|p| {
-        texture(&p.texture)
-            || match &p.shape {
-                PrimShape::Csg(c) => c.leaves.iter().any(|l| texture(&l.texture)),
-                PrimShape::Mesh(m) => m.data.textures.iter().any(|t| texture(t)),
-                _ => false,
-            }
-    })
+    primitives
+        .iter()
+        .map(|p| {
+            texture(&p.texture)
+                || match &p.shape {
+                    PrimShape::Csg(c) => c.leaves.iter().any(|l| texture(&l.texture)),
+                    PrimShape::Mesh(m) => m.data.textures.iter().any(|t| texture(t)),
+                    _ => false,
+                }
+        })
+        .collect()
 }

@@ -389,7 +389,9 @@ impl Renderer<'_> {
         let mut sum = centre;
         for k in 0..n * n {
             let mut s = self.sampler(x, y, k + 1);
-            let (dx, dy) = aa.grid_offset(k, s.next_2d());
+            // A regular grid (`jitter 0`) draws nothing for the sub-pixel position.
+            let jitter = if aa.jitter == 0.0 { (0.5, 0.5) } else { s.next_2d() };
+            let (dx, dy) = aa.grid_offset(k, jitter);
             let at = (f64::from(x) + dx, f64::from(y) + dy);
             sum += self.sample_at((x, y, k + 1), at, &mut s, st);
         }

@@ -285,11 +285,18 @@ fn transmitted(
 /// `hint` is a primitive to test first, updated to the blocker found (see
 /// [`World::occluded_hinted`]).
 pub fn shadow_filter(world: &World, ray: &Ray, t_min: f64, t_max: f64, hint: &mut u32) -> DVec3 {
-    if !world.occluded_hinted(ray, t_min, t_max, hint) {
-        return DVec3::ONE;
-    }
     if !world.transparent {
-        return DVec3::ZERO;
+        return if world.occluded_hinted(ray, t_min, t_max, hint) {
+            DVec3::ZERO
+        } else {
+            DVec3::ONE
+        };
+    }
+    // Dark behind anything opaque; else walk the see-through surfaces in order.
+    match world.shadow_blockers(ray, t_min, t_max, hint) {
+        crate::build::Blockers::None => return DVec3::ONE,
+        crate::build::Blockers::Opaque => return DVec3::ZERO,
+        crate::build::Blockers::Translucent => {}
     }
     let mut through = DVec3::ONE;
     let mut t0 = t_min;
