@@ -298,13 +298,13 @@ mod tests {
         for kind in kinds {
             for freq in [1.0, 3.0] {
                 let nrm = Normal {
-                    kind: kind.clone(),
+                    kind,
                     mods: PatternMods {
                         frequency: freq,
                         ..PatternMods::default()
                     },
                     bump_size: 1.0,
-                    transform: Some(Arc::new(tr.clone())),
+                    transform: Some(Arc::new(tr)),
                 };
                 for i in 0..50 {
                     let p = DVec3::new(
