@@ -38,14 +38,7 @@ impl Box32 {
 
     /// The f32 box holding `b` (rounded outwards).
     fn from_aabb(b: &Aabb) -> Box32 {
-        let down = |x: f64| {
-            let f = x as f32;
-            if (f as f64) > x {
-                f.next_down()
-            } else {
-                f
-            }
-        };
+        let down = round_down;
         let up = |x: f64| {
             let f = x as f32;
             if (f as f64) < x {
@@ -240,8 +233,13 @@ impl Bvh {
         mut t_max: f64,
         visit: &mut impl FnMut(u32, f64) -> Option<f64>,
     ) {
-        let mut stack = [0u32; STACK];
-        let mut spill: Vec<u32> = Vec::new();
+        // Deferred far children with their entry distances: a popped node whose
+        // entry lies beyond the (since shrunk) `t_max` is skipped with one
+        // comparison instead of a second box test.
+        // Distances are kept as f32 rounded down, so a skip is never wrong and
+        // the stack stays 8 bytes an entry.
+        let mut stack = [(0u32, 0f32); STACK];
+        let mut spill: Vec<(u32, f32)> = Vec::new();
         let mut sp = 0usize;
         let mut node = 0usize;
         if self.nodes[0]
@@ -265,12 +263,13 @@ impl Bvh {
                 let tb = self.nodes[b].hit::<FINITE>(ray, inv, t_min, t_max);
                 match (ta, tb) {
                     (Some(x), Some(y)) => {
-                        let (near, far) = if x <= y { (a, b) } else { (b, a) };
+                        let (near, far, t_far) = if x <= y { (a, b, y) } else { (b, a, x) };
+                        let t_far = round_down(t_far);
                         if sp < STACK {
-                            stack[sp] = far as u32;
+                            stack[sp] = (far as u32, t_far);
                             sp += 1;
                         } else {
-                            spill.push(far as u32);
+                            spill.push((far as u32, t_far));
                         }
                         node = near;
                         continue;
@@ -286,25 +285,35 @@ impl Bvh {
                     (None, None) => {}
                 }
             }
-            // Pop, skipping nodes the shrunk interval no longer reaches.
+            // Pop, skipping nodes the shrunk interval no longer reaches (their
+            // entry was within their box's exit when pushed, so this comparison
+            // is the whole box test again).
             loop {
-                let cand = if let Some(c) = spill.pop() {
-                    c as usize
+                let (cand, entry) = if let Some(c) = spill.pop() {
+                    c
                 } else if sp > 0 {
                     sp -= 1;
-                    stack[sp] as usize
+                    stack[sp]
                 } else {
                     return;
                 };
-                if self.nodes[cand]
-                    .hit::<FINITE>(ray, inv, t_min, t_max)
-                    .is_some()
-                {
-                    node = cand;
+                if f64::from(entry) <= t_max {
+                    node = cand as usize;
                     break;
                 }
             }
         }
+    }
+}
+
+/// `x` as an f32 no greater than it.
+#[inline(always)]
+fn round_down(x: f64) -> f32 {
+    let f = x as f32;
+    if f64::from(f) > x {
+        f.next_down()
+    } else {
+        f
     }
 }
 

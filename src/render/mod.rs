@@ -390,7 +390,11 @@ impl Renderer<'_> {
         for k in 0..n * n {
             let mut s = self.sampler(x, y, k + 1);
             // A regular grid (`jitter 0`) draws nothing for the sub-pixel position.
-            let jitter = if aa.jitter == 0.0 { (0.5, 0.5) } else { s.next_2d() };
+            let jitter = if aa.jitter == 0.0 {
+                (0.5, 0.5)
+            } else {
+                s.next_2d()
+            };
             let (dx, dy) = aa.grid_offset(k, jitter);
             let at = (f64::from(x) + dx, f64::from(y) + dy);
             sum += self.sample_at((x, y, k + 1), at, &mut s, st);
