@@ -2,7 +2,7 @@
 //! (or, for list patterns, to an entry index). Definitions follow the POV-Ray 3.7
 //! manual; the geometric ones were checked pixel by pixel against POV-Ray renders.
 
-use super::noise::{noise, noise_grad, turbulence, turbulence_vec};
+use super::noise::{dnoise, noise, noise_grad, turbulence, turbulence_vec};
 use crate::scene::{PatternKind, PatternMods, Wave};
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
@@ -218,6 +218,31 @@ pub fn height(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
         return sum;
     }
     value(kind, p, m)
+}
+
+/// The vector a `bumps` or `wrinkles` normal leans the surface normal against,
+/// in pattern space; `None` for the other patterns, which lean against the slope
+/// of their [`height`]. As POV-Ray's renders show, these two perturb by a vector
+/// noise rather than by a height's slope: its bumps have the feature size of the
+/// noise itself (a slope would halve it), and its wrinkles (ten octaves of the
+/// component-wise magnitude of the vector noise) lean consistently to one side,
+/// which darkens a surface lit from the other.
+pub fn lean_vector(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<DVec3> {
+    match kind {
+        PatternKind::Bumps => Some(dnoise(warp(p, m))),
+        PatternKind::Wrinkles => {
+            let q = warp(p, m);
+            let mut sum = DVec3::ZERO;
+            let mut freq = 1.0;
+            for _ in 0..10 {
+                sum += dnoise(q * freq).abs() / freq;
+                freq *= 2.0;
+            }
+            // Leaning *with* the summed magnitudes (the normal gains them).
+            Some(-sum)
+        }
+        _ => None,
+    }
 }
 
 /// The gradient of [`height`] at `p`, computed analytically for the patterns
