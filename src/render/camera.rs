@@ -74,20 +74,23 @@ fn pinhole(camera: &Camera, sx: f64, sy: f64) -> Option<(DVec3, DVec3)> {
             if rad > 1.0 {
                 return None;
             }
-            let phi = y0.atan2(x0);
             let theta = rad * angle.to_radians() / 2.0;
             let (st, ct) = theta.sin_cos();
-            (loc, st * phi.cos() * rn + st * phi.sin() * un + ct * dn)
+            // cos φ and sin φ of the screen angle φ = atan2(y0, x0), without trigonometry.
+            let (cp, sp) = if rad > 0.0 {
+                (x0 / rad, y0 / rad)
+            } else {
+                (1.0, 0.0)
+            };
+            (loc, st * cp * rn + st * sp * un + ct * dn)
         }
         CameraKind::UltraWideAngle { angle } => {
             let (dn, rn, un, aspect) = units();
             let half = angle.to_radians() / 2.0;
             let lon = 2.0 * sx * half;
             let lat = 2.0 * sy * half / aspect;
-            (
-                loc,
-                lon.sin() * rn + lat.sin() * un + lon.cos() * lat.cos() * dn,
-            )
+            let ((sl, cl), (sb, cb)) = (lon.sin_cos(), lat.sin_cos());
+            (loc, sl * rn + sb * un + cl * cb * dn)
         }
         CameraKind::Panoramic => {
             let (_, _, un, _) = units();
