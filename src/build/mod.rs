@@ -597,20 +597,63 @@ impl World {
     /// ray. The answer does not depend on `hint`, only the time it takes.
     pub fn occluded_hinted(&self, ray: &Ray, t_min: f64, t_max: f64, hint: &mut u32) -> bool {
         let kind = RayKind::Shadow;
-        let hit_by = |i: u32| {
+        self.first_blocker(ray, t_min, t_max, hint, |i| {
             let p = &self.primitives[i as usize];
             kind.sees(&p.flags) && p.intersect(ray, t_min, t_max).is_some()
-        };
-        if (*hint as usize) < self.primitives.len() && hit_by(*hint) {
+        })
+    }
+
+    /// What blocks a shadow ray in `(t_min, t_max)`: nothing, something opaque
+    /// (see [`World::translucent`]; the ray is dark whatever else it meets), or
+    /// only surfaces that may let light through. One traversal; `hint` as in
+    /// [`World::occluded_hinted`] (an opaque blocker).
+    pub fn shadow_blockers(&self, ray: &Ray, t_min: f64, t_max: f64, hint: &mut u32) -> Blockers {
+        let mut seen_translucent = false;
+        let opaque = self.first_blocker(ray, t_min, t_max, hint, |i| {
+            let p = &self.primitives[i as usize];
+            if !RayKind::Shadow.sees(&p.flags) {
+                return false;
+            }
+            let see_through = self.translucent.get(i as usize).copied().unwrap_or(true);
+            if see_through && seen_translucent {
+                return false;
+            }
+            if p.intersect(ray, t_min, t_max).is_none() {
+                return false;
+            }
+            seen_translucent |= see_through;
+            !see_through
+        });
+        if opaque {
+            Blockers::Opaque
+        } else if seen_translucent {
+            Blockers::Translucent
+        } else {
+            Blockers::None
+        }
+    }
+
+    /// Whether `blocks` holds for some primitive the ray's interval may reach:
+    /// `hint` first, then the unbounded primitives, then the hierarchy. The one
+    /// found is left in `hint`.
+    fn first_blocker(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        hint: &mut u32,
+        mut blocks: impl FnMut(u32) -> bool,
+    ) -> bool {
+        if (*hint as usize) < self.primitives.len() && blocks(*hint) {
             return true;
         }
-        if let Some(&i) = self.unbounded.iter().find(|&&i| hit_by(i)) {
+        if let Some(&i) = self.unbounded.iter().find(|&&i| blocks(i)) {
             *hint = i;
             return true;
         }
         let mut found = None;
         self.bvh.traverse(ray, t_min, t_max, |i, t_max| {
-            if hit_by(i) {
+            if blocks(i) {
                 found = Some(i);
                 return None;
             }
@@ -620,58 +663,6 @@ impl World {
             *hint = i;
         }
         found.is_some()
-    }
-
-    /// What blocks a shadow ray in `(t_min, t_max)`: nothing, something opaque
-    /// (see [`World::translucent`]; the ray is dark whatever else it meets), or
-    /// only surfaces that may let light through. One traversal; `hint` as in
-    /// [`World::occluded_hinted`] (an opaque blocker).
-    pub fn shadow_blockers(&self, ray: &Ray, t_min: f64, t_max: f64, hint: &mut u32) -> Blockers {
-        let translucent = |i: u32| self.translucent.get(i as usize).copied().unwrap_or(true);
-        let mut seen_translucent = false;
-        let mut blocks = |i: u32| {
-            let p = &self.primitives[i as usize];
-            if !RayKind::Shadow.sees(&p.flags) {
-                return false;
-            }
-            let see_through = translucent(i);
-            if see_through && seen_translucent {
-                return false;
-            }
-            if p.intersect(ray, t_min, t_max).is_none() {
-                return false;
-            }
-            seen_translucent |= see_through;
-            !see_through
-        };
-        let mut opaque = (*hint as usize) < self.primitives.len() && blocks(*hint);
-        if !opaque {
-            if let Some(&i) = self.unbounded.iter().find(|&&i| blocks(i)) {
-                *hint = i;
-                opaque = true;
-            }
-        }
-        if !opaque {
-            let mut found = None;
-            self.bvh.traverse(ray, t_min, t_max, |i, t_max| {
-                if blocks(i) {
-                    found = Some(i);
-                    return None;
-                }
-                Some(t_max)
-            });
-            if let Some(i) = found {
-                *hint = i;
-                opaque = true;
-            }
-        }
-        if opaque {
-            Blockers::Opaque
-        } else if seen_translucent {
-            Blockers::Translucent
-        } else {
-            Blockers::None
-        }
     }
 
     /// Whether world point `p` is inside any object, by POV-Ray's rules (see
