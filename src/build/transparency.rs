@@ -6,13 +6,14 @@ use crate::scene::{Pattern, PatternMap, Pigment, Texture};
 
 /// For each of `primitives`, whether any of its textures (any layer, CSG leaves
 /// and mesh texture lists included) may let light through: a pigment with filter
-/// or transmit anywhere, or an image map.
+/// or transmit anywhere, or an image map with such pixels or `once`.
 pub(super) fn translucent(primitives: &[Primitive]) -> Vec<bool> {
     fn pigment(p: &Pigment) -> bool {
         match &p.pattern {
             Pattern::Solid(c) => c.filter + c.transmit > 0.0,
             Pattern::Checker(pair) => pair.iter().any(pigment),
-            Pattern::Image(_) => true,
+            // Outside a `once` map is see-through; inside, the pixels decide.
+            Pattern::Image(m) => m.once || m.pixels.iter().any(|c| c.filter + c.transmit > 0.0),
             Pattern::Mapped(m) => match &m.map {
                 PatternMap::Colours(e) => e.iter().any(|(_, c)| c.filter + c.transmit > 0.0),
                 PatternMap::Pigments(e) => e.iter().any(|(_, p)| pigment(p)),
