@@ -15,7 +15,7 @@
 use super::super::pigment;
 use super::super::shade::{fresnel, reflection_amount};
 use crate::build::SurfaceHit;
-use crate::scene::Finish;
+use crate::scene::{Finish, Interior, Texture};
 use glam::DVec3;
 use std::f64::consts::{FRAC_1_PI, PI};
 
@@ -69,6 +69,73 @@ pub struct BsdfSample {
     pub pass: bool,
 }
 
+/// The scattering of a texture that is the same at every point: a solid pigment,
+/// no `normal { }`, and a reflection that does not vary with the viewing angle.
+/// [`Material::at`] then gives exactly what [`Bsdf::at`] would, without
+/// evaluating the texture at each hit.
+#[derive(Clone, Copy, Debug)]
+pub struct Material {
+    /// Everything but the normal and the relative index of refraction.
+    template: Bsdf,
+    /// The interior's index of refraction.
+    ior: f64,
+}
+
+impl Material {
+    /// The constant scattering of `tex` with interior `interior`, or `None` when it
+    /// varies over the surface or with the viewing angle.
+    pub fn constant(tex: &Texture, interior: Option<&Interior>) -> Option<Material> {
+        let r = &tex.finish.reflection;
+        let crate::scene::Pattern::Solid(c) = tex.pigment.pattern else {
+            return None;
+        };
+        if tex.normal.is_some() || r.fresnel || r.min != r.max {
+            return None;
+        }
+        let ior = interior.map_or(1.0, |i| i.ior);
+        Some(Material {
+            template: Bsdf::from_colour(tex, c, ior, DVec3::Z, DVec3::Z, true),
+            ior,
+        })
+    }
+
+    /// The scattering at a hit with unit shading normal `normal` and geometric
+    /// normal `geo_normal`, seen from unit direction `wo`: equal to [`Bsdf::at`].
+    #[inline]
+    pub fn at(&self, normal: DVec3, geo_normal: DVec3, wo: DVec3) -> Bsdf {
+        let mut b = self.template;
+        b.n = facing(normal, wo);
+        let eta = if wo.dot(geo_normal) > 0.0 {
+            self.ior
+        } else {
+            1.0 / self.ior
+        };
+        b.eta = straight_or(self.ior, eta);
+        b
+    }
+}
+
+/// `n` turned to the side of `wo`.
+#[inline]
+fn facing(n: DVec3, wo: DVec3) -> DVec3 {
+    if n.dot(wo) < 0.0 {
+        -n
+    } else {
+        n
+    }
+}
+
+/// The relative index stored in a [`Bsdf`]: exactly 1 for an interior of ior 1
+/// (light passes straight through), else `eta`.
+#[inline]
+fn straight_or(ior: f64, eta: f64) -> f64 {
+    if (ior - 1.0).abs() < 1e-9 {
+        1.0
+    } else {
+        eta
+    }
+}
+
 /// GGX alpha for a Blinn exponent `n` (Beckmann-equivalent width).
 fn blinn_alpha(n: f64) -> f64 {
     (2.0 / (n.max(0.0) + 2.0)).sqrt().clamp(SMOOTH_ALPHA, 1.0)
@@ -112,21 +179,33 @@ impl Bsdf {
     /// viewer). Uses the top texture layer.
     pub fn at(s: &SurfaceHit, wo: DVec3) -> Bsdf {
         let tex = &**s.texture;
-        let facing = |n: DVec3| if n.dot(wo) < 0.0 { -n } else { n };
         let n = match &tex.normal {
-            Some(nrm) => pigment::perturb(nrm, facing(s.normal), s.p, s.texture_from_world),
-            None => facing(s.normal),
+            Some(nrm) => pigment::perturb(nrm, facing(s.normal, wo), s.p, s.texture_from_world),
+            None => facing(s.normal, wo),
         };
         let tp = s
             .texture_from_world
             .map_or(s.p, |m| m.transform_point3(s.p));
         let c = pigment::evaluate_uv(&tex.pigment, tp, s.uv);
+        let ior = s.interior.map_or(1.0, |i| i.ior);
+        Bsdf::from_colour(tex, c, ior, n, wo, wo.dot(s.geo_normal) > 0.0)
+    }
+
+    /// The scattering of `tex` whose pigment gave `c` at the hit, with interior
+    /// `ior`, shading normal `n` (on the viewer's side), viewer direction `wo`, and
+    /// whether the viewer is on the geometric normal's side (`entering`).
+    fn from_colour(
+        tex: &Texture,
+        c: crate::scene::Colour,
+        ior: f64,
+        n: DVec3,
+        wo: DVec3,
+        entering: bool,
+    ) -> Bsdf {
         let f = &tex.finish;
         let colour = c.rgb.max(DVec3::ZERO);
         let tr = (c.filter + c.transmit).clamp(0.0, 1.0);
         let opacity = 1.0 - tr;
-        let ior = s.interior.map_or(1.0, |i| i.ior);
-        let entering = wo.dot(s.geo_normal) > 0.0;
         let eta = if entering { ior } else { 1.0 / ior };
         let cos_v = n.dot(wo).max(0.0);
         let r = reflection_amount(&f.reflection, cos_v, eta).clamp(DVec3::ZERO, DVec3::ONE);
@@ -151,7 +230,7 @@ impl Bsdf {
             gloss: gloss * opacity,
             gloss_alpha,
             trans,
-            eta: if (ior - 1.0).abs() < 1e-9 { 1.0 } else { eta },
+            eta: straight_or(ior, eta),
             trans_alpha: alpha,
             emission: f.emission * colour * opacity,
             albedo: colour * opacity + trans,

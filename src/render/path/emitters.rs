@@ -63,6 +63,8 @@ struct Emitter {
     /// World centre and radius of a sphere kept round by its transform: sampled
     /// by the solid angle it subtends instead of by area.
     ball: Option<(DVec3, f64)>,
+    /// The radiance when it is the same all over (a solid pigment).
+    radiance: Option<DVec3>,
 }
 
 /// Every emitter of a world, and the `looks_like` objects.
@@ -193,11 +195,20 @@ impl Emitters {
                 }
                 _ => None,
             };
+            let radiance = match prim.texture.pigment.pattern {
+                crate::scene::Pattern::Solid(_) => Some(emitted(
+                    &prim.texture,
+                    prim.texture_from_world.as_ref(),
+                    DVec3::ZERO,
+                )),
+                _ => None,
+            };
             e.list.push(Emitter {
                 prim: i as u32,
                 shape,
                 area,
                 ball,
+                radiance,
             });
             e.cdf.push(total);
             e.index[i] = e.list.len() as u32;
@@ -242,7 +253,9 @@ impl Emitters {
         let prim = &world.primitives[e.prim as usize];
         if let Some(cone) = e.ball.and_then(|(c, r)| Cone::new(c, r, from)) {
             let (p, n) = cone.sample(u2);
-            let radiance = emitted(&prim.texture, prim.texture_from_world.as_ref(), p);
+            let radiance = e
+                .radiance
+                .unwrap_or_else(|| emitted(&prim.texture, prim.texture_from_world.as_ref(), p));
             return Some(EmitterPoint {
                 p,
                 n,
@@ -256,7 +269,9 @@ impl Emitters {
             p_obj,
             n_obj,
         );
-        let radiance = emitted(&prim.texture, prim.texture_from_world.as_ref(), p);
+        let radiance = e
+            .radiance
+            .unwrap_or_else(|| emitted(&prim.texture, prim.texture_from_world.as_ref(), p));
         Some(EmitterPoint {
             p,
             n,

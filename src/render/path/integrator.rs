@@ -3,11 +3,11 @@
 //! sampling (power heuristic) between emitter sampling and BSDF sampling, and
 //! Russian roulette.
 
-use super::bsdf::Bsdf;
+use super::bsdf::{Bsdf, Material};
 use super::emitters::Emitters;
 use super::environment::Environment;
 use super::lights;
-use crate::build::{Ray, RayKind, World};
+use crate::build::{PrimShape, Ray, RayKind, World};
 use crate::render::{sky, RayStats, Sampler};
 use glam::DVec3;
 
@@ -26,14 +26,34 @@ pub struct PathScene<'a> {
     pub clear: bool,
     /// The environment as a sampled light (`None`: black or uniform).
     pub env: Option<Environment>,
+    /// Per primitive: its scattering when that is the same all over it (see
+    /// [`Material`]), so hits need not evaluate the texture.
+    pub materials: Vec<Option<Material>>,
 }
 
 impl<'a> PathScene<'a> {
     /// Prepares `world`.
     pub fn new(world: &'a World, max_depth: u32) -> PathScene<'a> {
+        let emitters = Emitters::new(world);
+        let materials = world
+            .primitives
+            .iter()
+            .map(|p| {
+                let own_textures = match &p.shape {
+                    PrimShape::Csg(_) => true,
+                    PrimShape::Mesh(m) => !m.data.textures.is_empty(),
+                    _ => false,
+                };
+                if own_textures || emitters.is_looks_like(&p.texture) {
+                    return None;
+                }
+                Material::constant(&p.texture, p.interior.as_deref())
+            })
+            .collect();
         PathScene {
             world,
-            emitters: Emitters::new(world),
+            emitters,
+            materials,
             max_depth: max_depth.max(1),
             clear: world.transparent,
             env: Environment::new(world),
@@ -97,7 +117,8 @@ pub fn radiance(
         };
         let s = world.surface(&ray, &hit);
         let wo = -ray.dir;
-        if sc.emitters.is_looks_like(s.texture) {
+        let material = sc.materials[hit.prim as usize];
+        if material.is_none() && sc.emitters.is_looks_like(s.texture) {
             // The visible stand-in of a light source: seen directly or in a mirror
             // it shows as in the classic renderer; the light itself does the
             // lighting, so it neither reflects nor emits for other paths.
@@ -118,7 +139,10 @@ pub fn radiance(
             }
             break;
         }
-        let bsdf = Bsdf::at(&s, wo);
+        let bsdf = match material {
+            Some(m) => m.at(s.normal, s.geo_normal, wo),
+            None => Bsdf::at(&s, wo),
+        };
         if first {
             out.albedo = bsdf.albedo;
             out.normal = bsdf.n;
