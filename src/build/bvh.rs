@@ -105,6 +105,15 @@ impl Node {
         max: Vec3::ZERO,
         first: 0,
     };
+}
+
+/// A node as the traversal reads it: bounds in f64 (where the ray's arithmetic
+/// happens), child or leaf range.
+trait Slabs: Copy {
+    fn min(&self) -> DVec3;
+    fn max(&self) -> DVec3;
+    fn count(&self) -> u32;
+    fn first(&self) -> u32;
 
     /// Entry distance of `ray` within `(t_min, t_max)`. `FINITE` says every
     /// component of `inv` is finite: then no slab distance can be NaN (0 × ∞)
@@ -118,31 +127,72 @@ impl Node {
         t_min: f64,
         t_max: f64,
     ) -> Option<f64> {
+        let (min, max) = (self.min(), self.max());
         if FINITE {
             let o = ray.origin;
             let lt = |a: f64, b: f64| if a < b { a } else { b };
             let gt = |a: f64, b: f64| if a > b { a } else { b };
-            let (x0, x1) = (
-                (self.min.x as f64 - o.x) * inv.x,
-                (self.max.x as f64 - o.x) * inv.x,
-            );
-            let (y0, y1) = (
-                (self.min.y as f64 - o.y) * inv.y,
-                (self.max.y as f64 - o.y) * inv.y,
-            );
-            let (z0, z1) = (
-                (self.min.z as f64 - o.z) * inv.z,
-                (self.max.z as f64 - o.z) * inv.z,
-            );
+            let (x0, x1) = ((min.x - o.x) * inv.x, (max.x - o.x) * inv.x);
+            let (y0, y1) = ((min.y - o.y) * inv.y, (max.y - o.y) * inv.y);
+            let (z0, z1) = ((min.z - o.z) * inv.z, (max.z - o.z) * inv.z);
             let near = gt(gt(lt(x0, x1), lt(y0, y1)), gt(lt(z0, z1), t_min));
             let far = lt(lt(gt(x0, x1), gt(y0, y1)), lt(gt(z0, z1), t_max));
             return (near <= far).then_some(near);
         }
-        let t0 = (self.min.as_dvec3() - ray.origin) * inv;
-        let t1 = (self.max.as_dvec3() - ray.origin) * inv;
+        let t0 = (min - ray.origin) * inv;
+        let t1 = (max - ray.origin) * inv;
         let near = t0.min(t1).max_element().max(t_min);
         let far = t0.max(t1).min_element().min(t_max);
         (near <= far).then_some(near)
+    }
+}
+
+impl Slabs for Node {
+    #[inline(always)]
+    fn min(&self) -> DVec3 {
+        self.min.as_dvec3()
+    }
+    #[inline(always)]
+    fn max(&self) -> DVec3 {
+        self.max.as_dvec3()
+    }
+    #[inline(always)]
+    fn count(&self) -> u32 {
+        self.count
+    }
+    #[inline(always)]
+    fn first(&self) -> u32 {
+        self.first
+    }
+}
+
+/// A [`Node`] with its (f32) bounds widened to f64 ahead of time: the same
+/// numbers, so the same traversal, without six conversions per box test. The
+/// world's hierarchy (small: one leaf per primitive) keeps these.
+#[derive(Clone, Copy, Debug)]
+struct Node64 {
+    min: DVec3,
+    max: DVec3,
+    count: u32,
+    first: u32,
+}
+
+impl Slabs for Node64 {
+    #[inline(always)]
+    fn min(&self) -> DVec3 {
+        self.min
+    }
+    #[inline(always)]
+    fn max(&self) -> DVec3 {
+        self.max
+    }
+    #[inline(always)]
+    fn count(&self) -> u32 {
+        self.count
+    }
+    #[inline(always)]
+    fn first(&self) -> u32 {
+        self.first
     }
 }
 
@@ -152,6 +202,9 @@ pub struct Bvh {
     nodes: Vec<Node>,
     /// Primitive indices, ordered so every leaf's are contiguous.
     prims: Vec<u32>,
+    /// `nodes` in f64 for the world's hierarchy (empty for meshes, whose trees
+    /// stay small in memory): traversal reads these when present.
+    exact: Vec<Node64>,
 }
 
 /// The build inputs shared by all tasks.
@@ -170,6 +223,16 @@ impl Bvh {
         for p in &mut bvh.prims {
             *p = items[*p as usize].0;
         }
+        bvh.exact = bvh
+            .nodes
+            .iter()
+            .map(|n| Node64 {
+                min: n.min.as_dvec3(),
+                max: n.max.as_dvec3(),
+                count: n.count,
+                first: n.first,
+            })
+            .collect();
         bvh
     }
 
@@ -199,6 +262,7 @@ impl Bvh {
         Bvh {
             nodes,
             prims: order,
+            exact: Vec::new(),
         }
     }
 
@@ -216,7 +280,9 @@ impl Bvh {
 
     /// Bytes held by the hierarchy.
     pub fn memory(&self) -> usize {
-        self.nodes.capacity() * std::mem::size_of::<Node>() + self.prims.capacity() * 4
+        self.nodes.capacity() * std::mem::size_of::<Node>()
+            + self.exact.capacity() * std::mem::size_of::<Node64>()
+            + self.prims.capacity() * 4
     }
 
     /// Visits leaves the ray may hit, nearest-first. `visit(prim, t_max)` tests one
@@ -234,17 +300,21 @@ impl Bvh {
             return;
         }
         let inv = ray.dir.recip();
-        if inv.is_finite() {
-            self.walk::<true>(ray, inv, t_min, t_max, &mut visit);
-        } else {
-            self.walk::<false>(ray, inv, t_min, t_max, &mut visit);
+        match (self.exact.is_empty(), inv.is_finite()) {
+            (true, true) => self.walk::<_, true>(&self.nodes, ray, inv, t_min, t_max, &mut visit),
+            (true, false) => self.walk::<_, false>(&self.nodes, ray, inv, t_min, t_max, &mut visit),
+            (false, true) => self.walk::<_, true>(&self.exact, ray, inv, t_min, t_max, &mut visit),
+            (false, false) => {
+                self.walk::<_, false>(&self.exact, ray, inv, t_min, t_max, &mut visit)
+            }
         }
     }
 
     /// [`Bvh::traverse`] with `inv = 1 / ray.dir`; see [`Node::hit`] for `FINITE`.
     #[inline(always)]
-    fn walk<const FINITE: bool>(
+    fn walk<N: Slabs, const FINITE: bool>(
         &self,
+        nodes: &[N],
         ray: &Ray,
         inv: DVec3,
         t_min: f64,
@@ -255,25 +325,25 @@ impl Bvh {
         let mut spill: Vec<u32> = Vec::new();
         let mut sp = 0usize;
         let mut node = 0usize;
-        if self.nodes[0]
-            .hit::<FINITE>(ray, inv, t_min, t_max)
-            .is_none()
-        {
+        if nodes[0].hit::<FINITE>(ray, inv, t_min, t_max).is_none() {
             return;
         }
         loop {
-            let n = self.nodes[node];
-            if n.count > 0 {
-                for &p in &self.prims[n.first as usize..(n.first + n.count) as usize] {
+            let n = nodes[node];
+            if n.count() > 0 {
+                for &p in &self.prims[n.first() as usize..(n.first() + n.count()) as usize] {
                     match visit(p, t_max) {
                         Some(t) => t_max = t,
                         None => return,
                     }
                 }
             } else {
-                let (a, b) = (n.first as usize, n.first as usize + 1);
-                let ta = self.nodes[a].hit::<FINITE>(ray, inv, t_min, t_max);
-                let tb = self.nodes[b].hit::<FINITE>(ray, inv, t_min, t_max);
+                let (a, b) = (n.first() as usize, n.first() as usize + 1);
+                let [na, nb] = &nodes[a..a + 2] else {
+                    unreachable!("interior nodes have two children");
+                };
+                let ta = na.hit::<FINITE>(ray, inv, t_min, t_max);
+                let tb = nb.hit::<FINITE>(ray, inv, t_min, t_max);
                 match (ta, tb) {
                     (Some(x), Some(y)) => {
                         let (near, far) = if x <= y { (a, b) } else { (b, a) };
@@ -307,10 +377,7 @@ impl Bvh {
                 } else {
                     return;
                 };
-                if self.nodes[cand]
-                    .hit::<FINITE>(ray, inv, t_min, t_max)
-                    .is_some()
-                {
+                if nodes[cand].hit::<FINITE>(ray, inv, t_min, t_max).is_some() {
                     node = cand;
                     break;
                 }
