@@ -345,9 +345,9 @@ impl Cone {
     fn sample(&self, (u, v): (f64, f64)) -> (DVec3, DVec3) {
         let cos_t = 1.0 - u * self.one_minus_cos;
         let sin_t = (1.0 - cos_t * cos_t).max(0.0).sqrt();
-        let phi = 2.0 * PI * v;
+        let (c, s) = super::bsdf::turn(v);
         let (t, b) = self.axis.any_orthonormal_pair();
-        let w = sin_t * phi.cos() * t + sin_t * phi.sin() * b + cos_t * self.axis;
+        let w = sin_t * c * t + sin_t * s * b + cos_t * self.axis;
         let disc = self.radius * self.radius - self.dist * self.dist * sin_t * sin_t;
         let along = self.dist * cos_t - disc.max(0.0).sqrt();
         let p = self.from + along * w;
@@ -383,8 +383,8 @@ fn sample_shape(s: &Sampled, (u, v): (f64, f64)) -> (DVec3, DVec3) {
         Sampled::Sphere { center, radius } => {
             let z = 1.0 - 2.0 * u;
             let r = (1.0 - z * z).max(0.0).sqrt();
-            let phi = 2.0 * PI * v;
-            let d = DVec3::new(r * phi.cos(), r * phi.sin(), z);
+            let (c, s) = super::bsdf::turn(v);
+            let d = DVec3::new(r * c, r * s, z);
             (*center + *radius * d, d)
         }
         Sampled::Disc {
@@ -394,9 +394,9 @@ fn sample_shape(s: &Sampled, (u, v): (f64, f64)) -> (DVec3, DVec3) {
             hole2,
         } => {
             let r = (hole2 + u * (r2 - hole2)).sqrt();
-            let phi = 2.0 * PI * v;
+            let (c, s) = super::bsdf::turn(v);
             let (t, b) = normal.any_orthonormal_pair();
-            (*center + r * (phi.cos() * t + phi.sin() * b), *normal)
+            (*center + r * (c * t + s * b), *normal)
         }
         Sampled::Box { min, max } => {
             let d = *max - *min;

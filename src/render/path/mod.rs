@@ -134,8 +134,8 @@ pub fn filter_offset(filter: PixelFilter, (u, v): (f64, f64)) -> (f64, f64) {
             let s2 = 2.0 * GAUSSIAN_SIGMA * GAUSSIAN_SIGMA;
             let cut = 1.0 - (-GAUSSIAN_RADIUS * GAUSSIAN_RADIUS / s2).exp();
             let r = (-s2 * (1.0 - u * cut).ln()).max(0.0).sqrt();
-            let phi = 2.0 * std::f64::consts::PI * v;
-            (0.5 + r * phi.cos(), 0.5 + r * phi.sin())
+            let (c, s) = bsdf::turn(v);
+            (0.5 + r * c, 0.5 + r * s)
         }
     }
 }
