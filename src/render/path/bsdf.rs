@@ -492,7 +492,7 @@ pub fn cosine_hemisphere((u1, u2): (f64, f64)) -> DVec3 {
 #[inline]
 pub fn turn(u: f64) -> (f64, f64) {
     let x = 4.0 * u;
-    let q = x.round();
+    let q = ((x + 0.5) as i64) as f64; // x ≥ 0: truncation rounds; no libm call
     let a = (x - q) * std::f64::consts::FRAC_PI_2;
     let a2 = a * a;
     let s = a
