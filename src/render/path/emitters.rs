@@ -45,6 +45,8 @@ enum Sampled {
         a: DVec3,
         e1: DVec3,
         e2: DVec3,
+        /// `e1 × e2` normalised (as [`triangle_point`] computes it).
+        n: DVec3,
     },
     /// Triangles picked by their share of the area (cumulative areas).
     Mesh {
@@ -147,11 +149,13 @@ impl Emitters {
                     a: *a,
                     e1: *e1,
                     e2: *e2,
+                    n: e1.cross(*e2).normalize_or_zero(),
                 },
                 PrimShape::SmoothTriangle(t) => Sampled::Triangle {
                     a: t.a,
                     e1: t.e1,
                     e2: t.e2,
+                    n: t.e1.cross(t.e2).normalize_or_zero(),
                 },
                 PrimShape::Mesh(m) => {
                     let mut acc = 0.0;
@@ -426,7 +430,7 @@ fn sample_shape(s: &Sampled, (u, v): (f64, f64)) -> (DVec3, DVec3) {
             n[axis] = if side { 1.0 } else { -1.0 };
             (p, n)
         }
-        Sampled::Triangle { a, e1, e2 } => triangle_point(*a, *e1, *e2, u, v),
+        Sampled::Triangle { a, e1, e2, n } => (triangle_at(*a, *e1, *e2, u, v), *n),
         Sampled::Mesh { mesh, cdf } => {
             let total = *cdf.last().unwrap_or(&0.0);
             let x = u * total;
@@ -441,9 +445,17 @@ fn sample_shape(s: &Sampled, (u, v): (f64, f64)) -> (DVec3, DVec3) {
 
 /// A uniform point on a triangle (square-root warp) and its normal.
 fn triangle_point(a: DVec3, e1: DVec3, e2: DVec3, u: f64, v: f64) -> (DVec3, DVec3) {
+    (
+        triangle_at(a, e1, e2, u, v),
+        e1.cross(e2).normalize_or_zero(),
+    )
+}
+
+/// A uniform point on a triangle (square-root warp).
+fn triangle_at(a: DVec3, e1: DVec3, e2: DVec3, u: f64, v: f64) -> DVec3 {
     let su = u.sqrt();
     let (b1, b2) = (1.0 - su, v * su);
-    (a + b1 * e1 + b2 * e2, e1.cross(e2).normalize_or_zero())
+    a + b1 * e1 + b2 * e2
 }
 
 /// The shape's unit normal at `p` (in its space).

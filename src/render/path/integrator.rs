@@ -128,11 +128,16 @@ pub fn radiance(
             break;
         };
         let wo = -ray.dir;
-        let material = sc.materials[hit.prim as usize];
-        let (p, geo_normal, bsdf) = match (material, sc.flat_normals[hit.prim as usize]) {
+        let material = &sc.materials[hit.prim as usize];
+        let (p, geo_normal);
+        let bsdf = match (material, sc.flat_normals[hit.prim as usize]) {
             // A plain triangle: the point and normal without the general
             // surface query (the same numbers).
-            (Some(m), Some(n)) => (ray.at(hit.t), n, m.at(n, n, wo)),
+            (Some(m), Some(n)) => {
+                p = ray.at(hit.t);
+                geo_normal = n;
+                m.at(n, n, wo)
+            }
             _ => {
                 let s = world.surface(&ray, &hit);
                 if material.is_none() && sc.emitters.is_looks_like(s.texture) {
@@ -158,11 +163,12 @@ pub fn radiance(
                     }
                     break;
                 }
-                let bsdf = match material {
+                p = s.p;
+                geo_normal = s.geo_normal;
+                match material {
                     Some(m) => m.at(s.normal, s.geo_normal, wo),
                     None => Bsdf::at(&s, wo),
-                };
-                (s.p, s.geo_normal, bsdf)
+                }
             }
         };
         if first {
