@@ -274,6 +274,11 @@ impl Bsdf {
         if cos_i <= 0.0 || cos_o <= 0.0 {
             return (DVec3::ZERO, 0.0);
         }
+        if w[1] <= 0.0 && w[2] <= 0.0 && w[3] <= 0.0 {
+            // Lambert alone: the general sum below with its one term (w[0] is
+            // the total), the same numbers.
+            return (self.diffuse * FRAC_1_PI * cos_i, cos_i * FRAC_1_PI);
+        }
         let mut f = DVec3::ZERO;
         let mut pdf = 0.0;
         if w[0] > 0.0 {

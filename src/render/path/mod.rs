@@ -259,6 +259,8 @@ fn render_box(
     total
 }
 
+/// The Gaussian's exponent factor: exp(a t²) with a = −1 / (2σ²).
+const SPLAT_A: f64 = -1.0 / (2.0 * GAUSSIAN_SIGMA * GAUSSIAN_SIGMA);
 /// Pixels on each side a splatted sample reaches.
 const SPLAT_REACH: usize = 2;
 /// Pixels across a splat.
@@ -270,6 +272,8 @@ const SPLAT_WIDTH: usize = 2 * SPLAT_REACH + 1;
 struct Splat {
     /// 1 / the filter's integral over the line.
     norm: f64,
+    /// exp(a R²) (the value subtracted), exp(a), exp(4a) for a = [`SPLAT_A`].
+    consts: [f64; 3],
     /// Share of the filter's weight that falls on pixel offsets −2..=2 from a
     /// sample's own pixel, averaged over positions in the pixel.
     shares: [f64; SPLAT_WIDTH],
@@ -299,13 +303,22 @@ impl Splat {
             let m = k as f64 - SPLAT_REACH as f64;
             *share = norm * simpson(0.0, 1.0, &|u| raw(u - 0.5 - m));
         }
-        Splat { norm, shares }
+        let a = SPLAT_A;
+        Splat {
+            norm,
+            shares,
+            consts: [
+                (a * SPLAT_RADIUS * SPLAT_RADIUS).exp(),
+                a.exp(),
+                (4.0 * a).exp(),
+            ],
+        }
     }
 
     /// The filter before normalisation at distance `t` (pixels) on one axis.
     #[inline]
     fn raw(t: f64) -> f64 {
-        let a = -1.0 / (2.0 * GAUSSIAN_SIGMA * GAUSSIAN_SIGMA);
+        let a = SPLAT_A;
         ((a * t * t).exp() - (a * SPLAT_RADIUS * SPLAT_RADIUS).exp()).max(0.0)
     }
 
@@ -315,12 +328,11 @@ impl Splat {
     fn weights(&self, u: f64) -> [f64; SPLAT_WIDTH] {
         // exp(a (d − m)²) = exp(a d²) · exp(−2ad)^m · exp(a m²): two calls of
         // exp for the five offsets instead of five.
-        let a = -1.0 / (2.0 * GAUSSIAN_SIGMA * GAUSSIAN_SIGMA);
-        let bias = (a * SPLAT_RADIUS * SPLAT_RADIUS).exp();
+        let a = SPLAT_A;
+        let [bias, c1, c2] = self.consts;
         let d = u - 0.5;
         let e = (a * d * d).exp();
         let r = (-2.0 * a * d).exp();
-        let (c1, c2) = (a.exp(), (4.0 * a).exp());
         let g = [
             e * c2 / (r * r),
             e * c1 / r,
