@@ -8,6 +8,7 @@
 
 use rand_core::{RngCore, SeedableRng};
 use rand_pcg::Pcg64Mcg;
+use sobol_burley::parts::{self, Int4};
 
 /// Dimensions served by the Sobol sequence.
 pub const SOBOL_DIMENSIONS: u32 = sobol_burley::NUM_DIMENSIONS;
@@ -19,6 +20,10 @@ pub struct Sampler {
     pixel_key: u32,
     /// Which sample of the pixel this is.
     index: u32,
+    /// The sample index as `sobol_burley` shuffles it (bit-reversed, Owen
+    /// scrambled by the pixel's seed): the same for every dimension, so computed
+    /// once instead of in each `sample_4d` call.
+    shuffled_rev: u32,
     /// The next dimension to hand out.
     dimension: u32,
     /// Generator for dimensions past the Sobol ones, made on first use.
@@ -34,9 +39,14 @@ impl Sampler {
     pub fn new(seed: u64, frame: u32, x: u32, y: u32, index: u32) -> Sampler {
         let key =
             mix(seed ^ mix(u64::from(frame) << 32 | u64::from(x)) ^ mix(u64::from(y) + 0x9e37));
+        let pixel_key = (key ^ (key >> 32)) as u32;
         Sampler {
-            pixel_key: (key ^ (key >> 32)) as u32,
+            pixel_key,
             index,
+            shuffled_rev: parts::owen_scramble_rev(
+                index.reverse_bits(),
+                parts::hash(pixel_key ^ 0x79c6_8e4a),
+            ),
             dimension: 0,
             overflow: None,
             cached: [0.0; 4],
@@ -44,15 +54,34 @@ impl Sampler {
     }
 
     /// The next value in [0, 1).
+    #[inline]
     pub fn next_f64(&mut self) -> f64 {
         let d = self.dimension;
         self.dimension += 1;
         if d < SOBOL_DIMENSIONS {
             if d.is_multiple_of(4) {
-                self.cached = sobol_burley::sample_4d(self.index, d / 4, self.pixel_key);
+                self.cached = self.sobol_4d(d / 4);
             }
             return f64::from(self.cached[d as usize % 4]);
         }
+        self.next_overflow()
+    }
+
+    /// `sobol_burley::sample_4d(index, set, pixel_key)` (the same values, tested)
+    /// with the index shuffle done once per sampler.
+    fn sobol_4d(&self, set: u32) -> [f32; 4] {
+        let sobol = parts::sobol_int4_rev(self.shuffled_rev, set);
+        let scramble = Int4::from([self.pixel_key.wrapping_mul(0x9c8f_2d3b); 4])
+            ^ Int4::from([set; 4])
+            ^ Int4::from([0x912f_69ba, 0x174f_18ab, 0x691e_72ca, 0xb40c_c1b8]);
+        parts::owen_scramble_int4_rev(sobol, parts::hash_int4(scramble))
+            .reverse_bits()
+            .to_f32_norm()
+    }
+
+    /// Dimensions past the Sobol ones.
+    #[cold]
+    fn next_overflow(&mut self) -> f64 {
         let (key, index) = (self.pixel_key, self.index);
         let rng = self.overflow.get_or_insert_with(|| {
             Pcg64Mcg::seed_from_u64(mix(u64::from(key) << 32 | u64::from(index)))
@@ -61,6 +90,7 @@ impl Sampler {
     }
 
     /// The next two values, for a point on a square.
+    #[inline]
     pub fn next_2d(&mut self) -> (f64, f64) {
         (self.next_f64(), self.next_f64())
     }
@@ -113,6 +143,20 @@ mod tests {
         for d in 0..SOBOL_DIMENSIONS {
             let want = f64::from(sobol_burley::sample(77, d, s.pixel_key));
             assert_eq!(s.next_f64(), want, "dimension {d}");
+        }
+    }
+
+    #[test]
+    fn cached_index_shuffle_gives_sobol_burleys_values() {
+        for (x, y, index) in [(0, 0, 0), (5, 9, 1), (300, 7, 4095), (1, 2, 65535)] {
+            let s = Sampler::new(11, 2, x, y, index);
+            for set in 0..sobol_burley::NUM_DIMENSION_SETS_4D {
+                assert_eq!(
+                    s.sobol_4d(set),
+                    sobol_burley::sample_4d(index, set, s.pixel_key),
+                    "pixel ({x}, {y}) sample {index} set {set}"
+                );
+            }
         }
     }
 

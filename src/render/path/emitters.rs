@@ -45,6 +45,8 @@ enum Sampled {
         a: DVec3,
         e1: DVec3,
         e2: DVec3,
+        /// `e1 × e2` normalised (as [`triangle_point`] computes it).
+        n: DVec3,
     },
     /// Triangles picked by their share of the area (cumulative areas).
     Mesh {
@@ -63,6 +65,8 @@ struct Emitter {
     /// World centre and radius of a sphere kept round by its transform: sampled
     /// by the solid angle it subtends instead of by area.
     ball: Option<(DVec3, f64)>,
+    /// The radiance when it is the same all over (a solid pigment).
+    radiance: Option<DVec3>,
 }
 
 /// Every emitter of a world, and the `looks_like` objects.
@@ -145,11 +149,13 @@ impl Emitters {
                     a: *a,
                     e1: *e1,
                     e2: *e2,
+                    n: e1.cross(*e2).normalize_or_zero(),
                 },
                 PrimShape::SmoothTriangle(t) => Sampled::Triangle {
                     a: t.a,
                     e1: t.e1,
                     e2: t.e2,
+                    n: t.e1.cross(t.e2).normalize_or_zero(),
                 },
                 PrimShape::Mesh(m) => {
                     let mut acc = 0.0;
@@ -193,11 +199,20 @@ impl Emitters {
                 }
                 _ => None,
             };
+            let radiance = match prim.texture.pigment.pattern {
+                crate::scene::Pattern::Solid(_) => Some(emitted(
+                    &prim.texture,
+                    prim.texture_from_world.as_ref(),
+                    DVec3::ZERO,
+                )),
+                _ => None,
+            };
             e.list.push(Emitter {
                 prim: i as u32,
                 shape,
                 area,
                 ball,
+                radiance,
             });
             e.cdf.push(total);
             e.index[i] = e.list.len() as u32;
@@ -242,7 +257,9 @@ impl Emitters {
         let prim = &world.primitives[e.prim as usize];
         if let Some(cone) = e.ball.and_then(|(c, r)| Cone::new(c, r, from)) {
             let (p, n) = cone.sample(u2);
-            let radiance = emitted(&prim.texture, prim.texture_from_world.as_ref(), p);
+            let radiance = e
+                .radiance
+                .unwrap_or_else(|| emitted(&prim.texture, prim.texture_from_world.as_ref(), p));
             return Some(EmitterPoint {
                 p,
                 n,
@@ -256,7 +273,9 @@ impl Emitters {
             p_obj,
             n_obj,
         );
-        let radiance = emitted(&prim.texture, prim.texture_from_world.as_ref(), p);
+        let radiance = e
+            .radiance
+            .unwrap_or_else(|| emitted(&prim.texture, prim.texture_from_world.as_ref(), p));
         Some(EmitterPoint {
             p,
             n,
@@ -330,9 +349,9 @@ impl Cone {
     fn sample(&self, (u, v): (f64, f64)) -> (DVec3, DVec3) {
         let cos_t = 1.0 - u * self.one_minus_cos;
         let sin_t = (1.0 - cos_t * cos_t).max(0.0).sqrt();
-        let phi = 2.0 * PI * v;
+        let (c, s) = super::bsdf::turn(v);
         let (t, b) = self.axis.any_orthonormal_pair();
-        let w = sin_t * phi.cos() * t + sin_t * phi.sin() * b + cos_t * self.axis;
+        let w = sin_t * c * t + sin_t * s * b + cos_t * self.axis;
         let disc = self.radius * self.radius - self.dist * self.dist * sin_t * sin_t;
         let along = self.dist * cos_t - disc.max(0.0).sqrt();
         let p = self.from + along * w;
@@ -368,8 +387,8 @@ fn sample_shape(s: &Sampled, (u, v): (f64, f64)) -> (DVec3, DVec3) {
         Sampled::Sphere { center, radius } => {
             let z = 1.0 - 2.0 * u;
             let r = (1.0 - z * z).max(0.0).sqrt();
-            let phi = 2.0 * PI * v;
-            let d = DVec3::new(r * phi.cos(), r * phi.sin(), z);
+            let (c, s) = super::bsdf::turn(v);
+            let d = DVec3::new(r * c, r * s, z);
             (*center + *radius * d, d)
         }
         Sampled::Disc {
@@ -379,9 +398,9 @@ fn sample_shape(s: &Sampled, (u, v): (f64, f64)) -> (DVec3, DVec3) {
             hole2,
         } => {
             let r = (hole2 + u * (r2 - hole2)).sqrt();
-            let phi = 2.0 * PI * v;
+            let (c, s) = super::bsdf::turn(v);
             let (t, b) = normal.any_orthonormal_pair();
-            (*center + r * (phi.cos() * t + phi.sin() * b), *normal)
+            (*center + r * (c * t + s * b), *normal)
         }
         Sampled::Box { min, max } => {
             let d = *max - *min;
@@ -411,7 +430,7 @@ fn sample_shape(s: &Sampled, (u, v): (f64, f64)) -> (DVec3, DVec3) {
             n[axis] = if side { 1.0 } else { -1.0 };
             (p, n)
         }
-        Sampled::Triangle { a, e1, e2 } => triangle_point(*a, *e1, *e2, u, v),
+        Sampled::Triangle { a, e1, e2, n } => (triangle_at(*a, *e1, *e2, u, v), *n),
         Sampled::Mesh { mesh, cdf } => {
             let total = *cdf.last().unwrap_or(&0.0);
             let x = u * total;
@@ -426,9 +445,17 @@ fn sample_shape(s: &Sampled, (u, v): (f64, f64)) -> (DVec3, DVec3) {
 
 /// A uniform point on a triangle (square-root warp) and its normal.
 fn triangle_point(a: DVec3, e1: DVec3, e2: DVec3, u: f64, v: f64) -> (DVec3, DVec3) {
+    (
+        triangle_at(a, e1, e2, u, v),
+        e1.cross(e2).normalize_or_zero(),
+    )
+}
+
+/// A uniform point on a triangle (square-root warp).
+fn triangle_at(a: DVec3, e1: DVec3, e2: DVec3, u: f64, v: f64) -> DVec3 {
     let su = u.sqrt();
     let (b1, b2) = (1.0 - su, v * su);
-    (a + b1 * e1 + b2 * e2, e1.cross(e2).normalize_or_zero())
+    a + b1 * e1 + b2 * e2
 }
 
 /// The shape's unit normal at `p` (in its space).

@@ -3,11 +3,11 @@
 //! sampling (power heuristic) between emitter sampling and BSDF sampling, and
 //! Russian roulette.
 
-use super::bsdf::Bsdf;
+use super::bsdf::{Bsdf, Material};
 use super::emitters::Emitters;
 use super::environment::Environment;
 use super::lights;
-use crate::build::{Ray, RayKind, World};
+use crate::build::{PrimShape, Ray, RayKind, World};
 use crate::render::{sky, RayStats, Sampler};
 use glam::DVec3;
 
@@ -26,14 +26,46 @@ pub struct PathScene<'a> {
     pub clear: bool,
     /// The environment as a sampled light (`None`: black or uniform).
     pub env: Option<Environment>,
+    /// Per primitive: its scattering when that is the same all over it (see
+    /// [`Material`]), so hits need not evaluate the texture.
+    pub materials: Vec<Option<Material>>,
+    /// Per primitive: the unit normal of a triangle kept in world space (as
+    /// [`World::surface`] computes it), so its hits skip that query.
+    pub flat_normals: Vec<Option<DVec3>>,
 }
 
 impl<'a> PathScene<'a> {
     /// Prepares `world`.
     pub fn new(world: &'a World, max_depth: u32) -> PathScene<'a> {
+        let emitters = Emitters::new(world);
+        let materials = world
+            .primitives
+            .iter()
+            .map(|p| {
+                let own_textures = match &p.shape {
+                    PrimShape::Csg(_) => true,
+                    PrimShape::Mesh(m) => !m.data.textures.is_empty(),
+                    _ => false,
+                };
+                if own_textures || emitters.is_looks_like(&p.texture) {
+                    return None;
+                }
+                Material::constant(&p.texture, p.interior.as_deref())
+            })
+            .collect();
+        let flat_normals = world
+            .primitives
+            .iter()
+            .map(|p| match (&p.shape, &p.transform) {
+                (PrimShape::Triangle { e1, e2, .. }, None) => Some(e1.cross(*e2).normalize()),
+                _ => None,
+            })
+            .collect();
         PathScene {
             world,
-            emitters: Emitters::new(world),
+            emitters,
+            materials,
+            flat_normals,
             max_depth: max_depth.max(1),
             clear: world.transparent,
             env: Environment::new(world),
@@ -95,30 +127,50 @@ pub fn radiance(
             }
             break;
         };
-        let s = world.surface(&ray, &hit);
         let wo = -ray.dir;
-        if sc.emitters.is_looks_like(s.texture) {
-            // The visible stand-in of a light source: seen directly or in a mirror
-            // it shows as in the classic renderer; the light itself does the
-            // lighting, so it neither reflects nor emits for other paths.
-            if prev_delta {
-                let tex = &**s.texture;
-                let tp = s
-                    .texture_from_world
-                    .map_or(s.p, |m| m.transform_point3(s.p));
-                let c = super::super::pigment::evaluate_uv(&tex.pigment, tp, s.uv);
-                let glow = (tex.finish.ambient * world.global.ambient_light + tex.finish.emission)
-                    * c.rgb
-                    * (1.0 - c.filter - c.transmit).max(0.0);
-                out.radiance += beta * glow;
-                if first {
-                    out.albedo = c.rgb;
-                    out.normal = s.normal;
+        let material = &sc.materials[hit.prim as usize];
+        let (p, geo_normal);
+        let bsdf = match (material, sc.flat_normals[hit.prim as usize]) {
+            // A plain triangle: the point and normal without the general
+            // surface query (the same numbers).
+            (Some(m), Some(n)) => {
+                p = ray.at(hit.t);
+                geo_normal = n;
+                m.at(n, n, wo)
+            }
+            _ => {
+                let s = world.surface(&ray, &hit);
+                if material.is_none() && sc.emitters.is_looks_like(s.texture) {
+                    // The visible stand-in of a light source: seen directly or in a
+                    // mirror it shows as in the classic renderer; the light itself
+                    // does the lighting, so it neither reflects nor emits for other
+                    // paths.
+                    if prev_delta {
+                        let tex = &**s.texture;
+                        let tp = s
+                            .texture_from_world
+                            .map_or(s.p, |m| m.transform_point3(s.p));
+                        let c = super::super::pigment::evaluate_uv(&tex.pigment, tp, s.uv);
+                        let glow = (tex.finish.ambient * world.global.ambient_light
+                            + tex.finish.emission)
+                            * c.rgb
+                            * (1.0 - c.filter - c.transmit).max(0.0);
+                        out.radiance += beta * glow;
+                        if first {
+                            out.albedo = c.rgb;
+                            out.normal = s.normal;
+                        }
+                    }
+                    break;
+                }
+                p = s.p;
+                geo_normal = s.geo_normal;
+                match material {
+                    Some(m) => m.at(s.normal, s.geo_normal, wo),
+                    None => Bsdf::at(&s, wo),
                 }
             }
-            break;
-        }
-        let bsdf = Bsdf::at(&s, wo);
+        };
         if first {
             out.albedo = bsdf.albedo;
             out.normal = bsdf.n;
@@ -128,10 +180,10 @@ pub fn radiance(
             let w = if prev_delta {
                 1.0
             } else {
-                let pa = sc.emitters.pdf_area(world, hit.prim, hit.sub, s.p, prev_p);
+                let pa = sc.emitters.pdf_area(world, hit.prim, hit.sub, p, prev_p);
                 if pa > 0.0 {
-                    let d2 = (s.p - prev_p).length_squared();
-                    let cos = s.geo_normal.dot(wo).abs().max(1e-12);
+                    let d2 = (p - prev_p).length_squared();
+                    let cos = geo_normal.dot(wo).abs().max(1e-12);
                     power(prev_pdf, pa * d2 / cos)
                 } else {
                     1.0
@@ -146,7 +198,7 @@ pub fn radiance(
         if bsdf.has_smooth_lobes() {
             for light in &world.lights {
                 let u = sampler.next_2d();
-                let Some(ls) = lights::sample(light, s.p, u) else {
+                let Some(ls) = lights::sample(light, p, u) else {
                     continue;
                 };
                 let (f, _) = bsdf.eval(wo, ls.wi);
@@ -159,8 +211,8 @@ pub fn radiance(
                     lights::transmittance(
                         world,
                         sc.clear,
-                        s.p,
-                        s.geo_normal,
+                        p,
+                        geo_normal,
                         ls.wi,
                         ls.dist,
                         &mut stats.shadow,
@@ -175,8 +227,8 @@ pub fn radiance(
                     let vis = lights::transmittance(
                         world,
                         sc.clear,
-                        s.p,
-                        s.geo_normal,
+                        p,
+                        geo_normal,
                         wi,
                         f64::INFINITY,
                         &mut stats.shadow,
@@ -190,8 +242,8 @@ pub fn radiance(
             if !sc.emitters.is_empty() {
                 let pick = sampler.next_f64();
                 let u = sampler.next_2d();
-                if let Some(ep) = sc.emitters.sample(world, s.p, pick, u) {
-                    let to = ep.p - s.p;
+                if let Some(ep) = sc.emitters.sample(world, p, pick, u) {
+                    let to = ep.p - p;
                     let d2 = to.length_squared();
                     let dist = d2.sqrt();
                     let wi = to / dist;
@@ -205,8 +257,8 @@ pub fn radiance(
                             let vis = lights::transmittance(
                                 world,
                                 sc.clear,
-                                s.p,
-                                s.geo_normal,
+                                p,
+                                geo_normal,
                                 wi,
                                 reach,
                                 &mut stats.shadow,
@@ -238,7 +290,7 @@ pub fn radiance(
             first = false;
             prev_delta = bs.delta;
             prev_pdf = bs.pdf;
-            prev_p = s.p;
+            prev_p = p;
             kind = RayKind::Reflected;
         }
         if depth >= ROULETTE_AFTER {
@@ -248,7 +300,7 @@ pub fn radiance(
             }
             beta /= q;
         }
-        let (next, eps) = Ray::secondary(s.p, s.geo_normal, bs.wi);
+        let (next, eps) = Ray::secondary(p, geo_normal, bs.wi);
         stats.reflected += 1;
         ray = next;
         t_min = eps;

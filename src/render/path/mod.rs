@@ -30,8 +30,12 @@ use std::sync::atomic::Ordering;
 
 /// Standard deviation of the Gaussian pixel filter, in pixels.
 pub const GAUSSIAN_SIGMA: f64 = 0.5;
-/// Radius at which the Gaussian pixel filter is cut off, in pixels.
+/// Radius at which the Gaussian pixel filter is cut off, in pixels (for
+/// [`filter_offset`]; the splatting filter of [`render_samples`] reaches
+/// [`SPLAT_RADIUS`]).
 pub const GAUSSIAN_RADIUS: f64 = 1.5;
+/// Radius of the splatted Gaussian (4σ, as Mitsuba's `gaussian` filter).
+pub const SPLAT_RADIUS: f64 = 4.0 * GAUSSIAN_SIGMA;
 
 /// How the path tracer renders, beyond [`Settings`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -134,15 +138,81 @@ pub fn filter_offset(filter: PixelFilter, (u, v): (f64, f64)) -> (f64, f64) {
             let s2 = 2.0 * GAUSSIAN_SIGMA * GAUSSIAN_SIGMA;
             let cut = 1.0 - (-GAUSSIAN_RADIUS * GAUSSIAN_RADIUS / s2).exp();
             let r = (-s2 * (1.0 - u * cut).ln()).max(0.0).sqrt();
-            let phi = 2.0 * std::f64::consts::PI * v;
-            (0.5 + r * phi.cos(), 0.5 + r * phi.sin())
+            let (c, s) = bsdf::turn(v);
+            (0.5 + r * c, 0.5 + r * s)
         }
     }
 }
 
 /// Adds samples `accum.samples .. accum.samples + n` of every pixel of the
 /// accumulator's region to it. `progress`, when given, counts rows × samples.
+///
+/// With the box filter each sample lands in its own pixel. With the Gaussian
+/// filter each sample (uniform in its pixel) is splatted onto the pixels within
+/// [`SPLAT_RADIUS`] with the filter's weight there, as Mitsuba does: every pixel
+/// then averages about π times as many samples, so its variance at equal sample
+/// count is about a third of what it would be with the samples placed by the
+/// filter (filter importance sampling). The weights integrate to one over the
+/// plane (and are renormalised near the region's border), so the estimate is
+/// unbiased: the expected picture is the image convolved with the filter either
+/// way. Per-pixel determinism holds: the contributions to a pixel are added in
+/// the order (sample index, source pixel), whatever the threads or passes.
 pub fn render_samples(
+    sc: &PathScene,
+    opts: &RenderOptions,
+    settings: &Settings,
+    popts: &PathOptions,
+    accum: &mut Accum,
+    n: u32,
+    progress: Option<&Progress>,
+) -> RenderStats {
+    let cw = accum.width() as usize;
+    if cw == 0 || n == 0 {
+        return RenderStats::default();
+    }
+    let stats = match popts.filter {
+        PixelFilter::Box => render_box(sc, opts, settings, popts, accum, n, progress),
+        PixelFilter::Gaussian => render_splat(sc, opts, settings, popts, accum, n, progress),
+    };
+    accum.samples += n;
+    stats
+}
+
+/// One camera sample at pixel (`x`, `y`) placed at offset `(dx, dy)` in it:
+/// (clamped radiance, first-hit albedo, first-hit normal), `None` without a ray.
+#[inline]
+fn camera_sample(
+    sc: &PathScene,
+    opts: &RenderOptions,
+    popts: &PathOptions,
+    (x, y): (u32, u32),
+    (dx, dy): (f64, f64),
+    s: &mut Sampler,
+    st: &mut RenderStats,
+) -> Option<PathSample> {
+    st.samples += 1;
+    let ray = primary_ray(
+        &sc.world.camera,
+        f64::from(x) + dx,
+        f64::from(y) + dy,
+        opts.width,
+        opts.height,
+        s,
+    )?;
+    st.rays.camera += 1;
+    let mut r = radiance(sc, ray, s, &mut st.rays);
+    if !r.radiance.is_finite() {
+        r.radiance = DVec3::ZERO;
+    }
+    let m = r.radiance.max_element();
+    if popts.clamp > 0.0 && m > popts.clamp {
+        r.radiance *= popts.clamp / m;
+    }
+    Some(r)
+}
+
+/// [`render_samples`] with the box filter: every sample in its own pixel.
+fn render_box(
     sc: &PathScene,
     opts: &RenderOptions,
     settings: &Settings,
@@ -153,11 +223,7 @@ pub fn render_samples(
 ) -> RenderStats {
     let crop = accum.crop;
     let cw = accum.width() as usize;
-    if cw == 0 || n == 0 {
-        return RenderStats::default();
-    }
     let first = accum.samples;
-    let world: &World = sc.world;
     let stats: Vec<RenderStats> = accum
         .sum
         .par_chunks_mut(cw)
@@ -171,30 +237,12 @@ pub fn render_samples(
                 let x = crop.x0 + i as u32;
                 for k in first..first + n {
                     let mut s = Sampler::new(settings.seed, settings.frame, x, y, k);
-                    let (dx, dy) = filter_offset(popts.filter, s.next_2d());
-                    st.samples += 1;
-                    let Some(ray) = primary_ray(
-                        &world.camera,
-                        f64::from(x) + dx,
-                        f64::from(y) + dy,
-                        opts.width,
-                        opts.height,
-                        &mut s,
-                    ) else {
-                        continue;
-                    };
-                    st.rays.camera += 1;
-                    let r = radiance(sc, ray, &mut s, &mut st.rays);
-                    let mut l = r.radiance;
-                    if !l.is_finite() {
-                        l = DVec3::ZERO;
+                    let off = filter_offset(PixelFilter::Box, s.next_2d());
+                    if let Some(r) = camera_sample(sc, opts, popts, (x, y), off, &mut s, &mut st) {
+                        sum[i] += r.radiance;
+                        alb[i] += r.albedo;
+                        nrm[i] += r.normal;
                     }
-                    if popts.clamp > 0.0 && l.max_element() > popts.clamp {
-                        l *= popts.clamp / l.max_element();
-                    }
-                    sum[i] += l;
-                    alb[i] += r.albedo;
-                    nrm[i] += r.normal;
                 }
                 st.pixels += 1;
             }
@@ -204,10 +252,205 @@ pub fn render_samples(
             st
         })
         .collect();
-    accum.samples += n;
     let mut total = RenderStats::default();
     for s in stats {
         total += s;
+    }
+    total
+}
+
+/// The Gaussian's exponent factor: exp(a t²) with a = −1 / (2σ²).
+const SPLAT_A: f64 = -1.0 / (2.0 * GAUSSIAN_SIGMA * GAUSSIAN_SIGMA);
+/// Pixels on each side a splatted sample reaches.
+const SPLAT_REACH: usize = 2;
+/// Pixels across a splat.
+const SPLAT_WIDTH: usize = 2 * SPLAT_REACH + 1;
+
+/// The splatting filter: a Gaussian of σ [`GAUSSIAN_SIGMA`] less its value at
+/// [`SPLAT_RADIUS`] (so it falls to zero there), separable in x and y.
+#[derive(Clone, Copy, Debug)]
+struct Splat {
+    /// 1 / the filter's integral over the line.
+    norm: f64,
+    /// exp(a R²) (the value subtracted), exp(a), exp(4a) for a = [`SPLAT_A`].
+    consts: [f64; 3],
+    /// Share of the filter's weight that falls on pixel offsets −2..=2 from a
+    /// sample's own pixel, averaged over positions in the pixel.
+    shares: [f64; SPLAT_WIDTH],
+}
+
+impl Splat {
+    fn new() -> Splat {
+        let raw = |t: f64| Splat::raw(t);
+        // Simpson's rule (the integrands are smooth between nodes).
+        let simpson = |a: f64, b: f64, f: &dyn Fn(f64) -> f64| {
+            let m = 2000;
+            let h = (b - a) / f64::from(m);
+            let mut acc = f(a) + f(b);
+            for k in 1..m {
+                acc += f(a + h * f64::from(k)) * if k % 2 == 1 { 4.0 } else { 2.0 };
+            }
+            acc * h / 3.0
+        };
+        let total = simpson(-SPLAT_RADIUS, SPLAT_RADIUS, &raw);
+        let norm = 1.0 / total;
+        // Offset m (target − source pixel): the sample at u ∈ [0, 1) in its pixel
+        // is at u − 0.5 − m from the target's centre. The kink at the radius
+        // falls on u = 0.5 (a node) for |m| = 2 and outside the pixel for the
+        // rest.
+        let mut shares = [0.0; SPLAT_WIDTH];
+        for (k, share) in shares.iter_mut().enumerate() {
+            let m = k as f64 - SPLAT_REACH as f64;
+            *share = norm * simpson(0.0, 1.0, &|u| raw(u - 0.5 - m));
+        }
+        let a = SPLAT_A;
+        Splat {
+            norm,
+            shares,
+            consts: [
+                (a * SPLAT_RADIUS * SPLAT_RADIUS).exp(),
+                a.exp(),
+                (4.0 * a).exp(),
+            ],
+        }
+    }
+
+    /// The filter before normalisation at distance `t` (pixels) on one axis.
+    #[inline]
+    fn raw(t: f64) -> f64 {
+        let a = SPLAT_A;
+        ((a * t * t).exp() - (a * SPLAT_RADIUS * SPLAT_RADIUS).exp()).max(0.0)
+    }
+
+    /// Normalised weights on one axis for a sample at `u` in its pixel, for the
+    /// pixels at offsets −2..=2 from it.
+    #[inline]
+    fn weights(&self, u: f64) -> [f64; SPLAT_WIDTH] {
+        // exp(a (d − m)²) = exp(a d²) · exp(−2ad)^m · exp(a m²): two calls of
+        // exp for the five offsets instead of five.
+        let a = SPLAT_A;
+        let [bias, c1, c2] = self.consts;
+        let d = u - 0.5;
+        let e = (a * d * d).exp();
+        let r = (-2.0 * a * d).exp();
+        let g = [
+            e * c2 / (r * r),
+            e * c1 / r,
+            e,
+            e * c1 * r,
+            e * c2 * (r * r),
+        ];
+        g.map(|v| self.norm * (v - bias).max(0.0))
+    }
+
+    /// 1 / the expected total weight a pixel at `i` of `len` receives (1 inside;
+    /// more near the border, where pixels beyond it send nothing).
+    fn border(&self, i: usize, len: usize) -> f64 {
+        let full: f64 = self.shares.iter().sum();
+        let mut got = 0.0;
+        for (k, share) in self.shares.iter().enumerate() {
+            // Source pixel i − m for offset m = k − 2.
+            let src = i as i64 - (k as i64 - SPLAT_REACH as i64);
+            if src >= 0 && (src as usize) < len {
+                got += share;
+            }
+        }
+        if got == full {
+            1.0
+        } else {
+            full / got
+        }
+    }
+}
+
+/// One sample of a pixel waiting to be splatted (64 bytes: the weights are kept
+/// in f32, whose rounding, 6e-8 of each weight, is far below any noise).
+#[derive(Clone, Copy, Debug, Default)]
+struct Pending {
+    radiance: DVec3,
+    /// Weights towards the columns at offsets −2..=2.
+    wx: [f32; SPLAT_WIDTH],
+    /// Weights towards the rows at offsets −2..=2.
+    wy: [f32; SPLAT_WIDTH],
+}
+
+/// [`render_samples`] with the Gaussian filter, splatting each sample index in
+/// two phases: every pixel's sample k, then every pixel gathers what its
+/// neighbours' samples k send it.
+fn render_splat(
+    sc: &PathScene,
+    opts: &RenderOptions,
+    settings: &Settings,
+    popts: &PathOptions,
+    accum: &mut Accum,
+    n: u32,
+    progress: Option<&Progress>,
+) -> RenderStats {
+    let crop = accum.crop;
+    let cw = accum.width() as usize;
+    let ch = (crop.y1 - crop.y0) as usize;
+    let first = accum.samples;
+    let splat = Splat::new();
+    let bx: Vec<f64> = (0..cw).map(|i| splat.border(i, cw)).collect();
+    let by: Vec<f64> = (0..ch).map(|j| splat.border(j, ch)).collect();
+    let mut pending = vec![Pending::default(); cw * ch];
+    let mut total = RenderStats::default();
+    for k in first..first + n {
+        let stats: Vec<RenderStats> = pending
+            .par_chunks_mut(cw)
+            .zip(accum.albedo.par_chunks_mut(cw))
+            .zip(accum.normal.par_chunks_mut(cw))
+            .enumerate()
+            .map(|(j, ((pend, alb), nrm))| {
+                let y = crop.y0 + j as u32;
+                let mut st = RenderStats::default();
+                for i in 0..cw {
+                    let x = crop.x0 + i as u32;
+                    let mut s = Sampler::new(settings.seed, settings.frame, x, y, k);
+                    let (u, v) = s.next_2d();
+                    let r = camera_sample(sc, opts, popts, (x, y), (u, v), &mut s, &mut st)
+                        .unwrap_or_default();
+                    pend[i] = Pending {
+                        radiance: r.radiance,
+                        wx: splat.weights(u).map(|w| w as f32),
+                        wy: splat.weights(v).map(|w| w as f32),
+                    };
+                    alb[i] += r.albedo;
+                    nrm[i] += r.normal;
+                    st.pixels += u64::from(k == first);
+                }
+                if let Some(p) = progress {
+                    p.done.fetch_add(1, Ordering::Relaxed);
+                }
+                st
+            })
+            .collect();
+        for s in stats {
+            total += s;
+        }
+        let pending = &pending;
+        accum
+            .sum
+            .par_chunks_mut(cw)
+            .enumerate()
+            .for_each(|(j, row)| {
+                let rows = j.saturating_sub(SPLAT_REACH)..(j + SPLAT_REACH + 1).min(ch);
+                for (i, out) in row.iter_mut().enumerate() {
+                    let cols = i.saturating_sub(SPLAT_REACH)..(i + SPLAT_REACH + 1).min(cw);
+                    let mut acc = DVec3::ZERO;
+                    for sj in rows.clone() {
+                        let src = &pending[sj * cw..(sj + 1) * cw];
+                        // Offset of this pixel from the source: j − sj ∈ −2..=2.
+                        let ky = j + SPLAT_REACH - sj;
+                        for si in cols.clone() {
+                            let p = &src[si];
+                            let w = f64::from(p.wx[i + SPLAT_REACH - si]) * f64::from(p.wy[ky]);
+                            acc += p.radiance * w;
+                        }
+                    }
+                    *out += acc * (bx[i] * by[j]);
+                }
+            });
     }
     total
 }
@@ -232,6 +475,28 @@ pub fn render(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn splat_weights_follow_the_filter_and_integrate_to_one() {
+        let sp = Splat::new();
+        let full: f64 = sp.shares.iter().sum();
+        assert!((full - 1.0).abs() < 1e-12, "{full}");
+        for i in 0..=100 {
+            let u = f64::from(i) / 100.0;
+            let w = sp.weights(u);
+            for (k, wk) in w.iter().enumerate() {
+                let m = k as f64 - SPLAT_REACH as f64;
+                let want = sp.norm * Splat::raw(u - 0.5 - m);
+                assert!(
+                    (wk - want).abs() < 1e-14,
+                    "u {u} offset {m}: {wk} vs {want}"
+                );
+            }
+        }
+        // Interior pixels get weight one; the border ones are scaled up.
+        assert_eq!(sp.border(10, 20), 1.0);
+        assert!(sp.border(0, 20) > 1.0 && (sp.border(19, 20) - sp.border(0, 20)).abs() < 1e-12);
+    }
 
     #[test]
     fn gaussian_offsets_stay_within_the_cut_off_and_centre_on_the_pixel() {
