@@ -314,12 +314,10 @@ impl Bvh {
         mut t_max: f64,
         visit: &mut impl FnMut(u32, f64) -> Option<f64>,
     ) {
-        // Deferred far children with their entry distances: a popped node whose
-        // entry lies beyond the (since shrunk) `t_max` is skipped with one
-        // comparison instead of a second box test. Distances are kept as f32
-        // rounded down, so a skip is never wrong and an entry stays 8 bytes.
-        let mut stack = [(0u32, 0f32); STACK];
-        let mut spill: Vec<(u32, f32)> = Vec::new();
+        // (Keeping each far child's entry distance to skip the box test on pop
+        // measured 11% slower on the 1M-triangle mesh and no faster on spheres.)
+        let mut stack = [0u32; STACK];
+        let mut spill: Vec<u32> = Vec::new();
         let mut sp = 0usize;
         let mut node = 0usize;
         if nodes[0].hit::<FINITE>(ray, inv, t_min, t_max).is_none() {
@@ -343,13 +341,12 @@ impl Bvh {
                 let tb = nb.hit::<FINITE>(ray, inv, t_min, t_max);
                 match (ta, tb) {
                     (Some(x), Some(y)) => {
-                        let (near, far, t_far) = if x <= y { (a, b, y) } else { (b, a, x) };
-                        let t_far = round_down(t_far);
+                        let (near, far) = if x <= y { (a, b) } else { (b, a) };
                         if sp < STACK {
-                            stack[sp] = (far as u32, t_far);
+                            stack[sp] = far as u32;
                             sp += 1;
                         } else {
-                            spill.push((far as u32, t_far));
+                            spill.push(far as u32);
                         }
                         node = near;
                         continue;
@@ -365,20 +362,18 @@ impl Bvh {
                     (None, None) => {}
                 }
             }
-            // Pop, skipping nodes the shrunk interval no longer reaches (their
-            // entry was within their box's exit when pushed, so this comparison
-            // is the whole box test again).
+            // Pop, skipping nodes the shrunk interval no longer reaches.
             loop {
-                let (cand, entry) = if let Some(c) = spill.pop() {
-                    c
+                let cand = if let Some(c) = spill.pop() {
+                    c as usize
                 } else if sp > 0 {
                     sp -= 1;
-                    stack[sp]
+                    stack[sp] as usize
                 } else {
                     return;
                 };
-                if f64::from(entry) <= t_max {
-                    node = cand as usize;
+                if nodes[cand].hit::<FINITE>(ray, inv, t_min, t_max).is_some() {
+                    node = cand;
                     break;
                 }
             }
