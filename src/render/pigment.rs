@@ -154,7 +154,7 @@ pub fn perturb(normal: &Normal, n: DVec3, p: DVec3, texture_from_world: Option<&
         if normal.kind.is_list() {
             patterns::list_index(&normal.kind, patterns::warp(t, &normal.mods)) as f64
         } else {
-            patterns::height(&normal.kind, t, &normal.mods)
+            patterns::value(&normal.kind, t, &normal.mods)
         }
     };
     // Central differences in world space, with a step relative to the pattern's
@@ -197,10 +197,10 @@ pub fn perturb(normal: &Normal, n: DVec3, p: DVec3, texture_from_world: Option<&
     }
 }
 
-/// The world-space gradient of `normal`'s height field at world point `p`, when
-/// the pattern has an analytic one ([`patterns::height_gradient`]): the
-/// pattern-space gradient carried back through the transposed linear part of the
-/// world → pattern map.
+/// The world-space vector `normal` leans against at world point `p`, when the
+/// pattern gives one directly: its lean vector ([`patterns::lean_vector`]) or
+/// its analytic slope ([`patterns::value_gradient`]), carried back from pattern
+/// space through the transposed linear part of the world → pattern map.
 fn analytic_slope(normal: &Normal, p: DVec3, texture_from_world: Option<&DMat4>) -> Option<DVec3> {
     if normal.kind.is_list() {
         return None;
@@ -219,7 +219,7 @@ fn analytic_slope(normal: &Normal, p: DVec3, texture_from_world: Option<&DMat4>)
         });
     }
     let g = patterns::lean_vector(&normal.kind, q, &normal.mods)
-        .or_else(|| patterns::height_gradient(&normal.kind, q, &normal.mods))?;
+        .or_else(|| patterns::value_gradient(&normal.kind, q, &normal.mods))?;
     Some(match to_pattern {
         Some(m) => m.transpose().transform_vector3(g),
         None => g,
@@ -299,6 +299,7 @@ mod tests {
         let tex = Transform::rotate(DVec3::new(0.0, 60.0, 15.0))
             .then(&Transform::scale(DVec3::splat(1.7)));
         let kinds = [
+            PatternKind::Bozo,
             PatternKind::Dents,
             PatternKind::Ripples,
             PatternKind::Waves,
@@ -323,11 +324,13 @@ mod tests {
                     );
                     let Some(g) = analytic_slope(&nrm, p, Some(&tex.inverse)) else {
                         // Noise patterns with a frequency go by differences.
-                        assert!(freq != 1.0 && kind == PatternKind::Dents);
+                        assert!(
+                            freq != 1.0 && matches!(kind, PatternKind::Bozo | PatternKind::Dents)
+                        );
                         continue;
                     };
                     let f = |q: DVec3| {
-                        patterns::height(
+                        patterns::value(
                             &nrm.kind,
                             tr.inverse.transform_point3(tex.inverse.transform_point3(q)),
                             &nrm.mods,

@@ -203,26 +203,9 @@ pub fn value(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
     }
 }
 
-/// The height field a `normal` pattern's slope is taken from: the pattern's value,
-/// except for `wrinkles`, whose octaves are weighted 1/f² so the fine octaves do
-/// not dominate the slope (POV-Ray's wrinkled surfaces are smooth at small scale).
-pub fn height(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
-    if let PatternKind::Wrinkles = kind {
-        let q = warp(p, m);
-        let mut sum = 0.0;
-        let mut freq = 1.0;
-        for _ in 0..10 {
-            sum += (noise(q * freq, m.noise_generator) - 0.5) / (freq * freq);
-            freq *= 2.0;
-        }
-        return sum;
-    }
-    value(kind, p, m)
-}
-
 /// The vector a `bumps` or `wrinkles` normal leans the surface normal against,
 /// in pattern space; `None` for the other patterns, which lean against the slope
-/// of their [`height`]. As POV-Ray's renders show, these two perturb by a vector
+/// of their [`value`]. As POV-Ray's renders show, these two perturb by a vector
 /// noise rather than by a height's slope: its bumps have the feature size of the
 /// noise itself (a slope would halve it), and its wrinkles (ten octaves of the
 /// component-wise magnitude of the vector noise) lean consistently to one side,
@@ -245,27 +228,18 @@ pub fn lean_vector(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<DVec
     }
 }
 
-/// The gradient of [`height`] at `p`, computed analytically for the patterns
-/// normals mostly use (`bumps`, `bozo`, `dents`, `wrinkles`, `ripples`, `waves`,
+/// The gradient of [`value`] at `p`, computed analytically for the slope-based
+/// normal patterns normals mostly use (`bozo`, `dents`, `ripples`, `waves`,
 /// `gradient`) without turbulence; `None` for the others, whose slope is taken by
-/// differences. Equal to the differences of [`height`] (a unit test checks).
-pub fn height_gradient(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<DVec3> {
+/// differences. Equal to the differences of [`value`] (a unit test checks).
+pub fn value_gradient(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<DVec3> {
     if m.turbulence != DVec3::ZERO || m.wave != Wave::Ramp {
         return None;
     }
     let plain = m.frequency == 1.0 && m.phase == 0.0;
     let g = m.noise_generator;
     match kind {
-        PatternKind::Wrinkles => {
-            let mut sum = DVec3::ZERO;
-            let mut freq = 1.0;
-            for _ in 0..10 {
-                sum += noise_grad(p * freq, g).1 / freq;
-                freq *= 2.0;
-            }
-            Some(sum)
-        }
-        PatternKind::Bozo | PatternKind::Bumps if plain => Some(noise_grad(p, g).1),
+        PatternKind::Bozo if plain => Some(noise_grad(p, g).1),
         PatternKind::Dents if plain => {
             let (n, d) = noise_grad(p, g);
             Some(3.0 * n * n * d)
