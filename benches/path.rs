@@ -6,23 +6,15 @@
 //! `rts render examples/cornell_box.rts --integrator path --spp 4 --threads 1`
 //! (see docs/pathtracing.md, "Speed").
 
+mod common;
+
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use rts::eval::{self, EvalOptions};
 use rts::render::path::{self, PathOptions};
 use rts::render::{RenderOptions, Settings};
 use rts::scene::PixelFilter;
-use rts::source::SourceMap;
-use std::path::Path;
 
 fn cornell() -> rts::build::World {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/cornell_box.rts");
-    let mut sources = SourceMap::new();
-    let id = eval::load_file(&mut sources, &path, "cornell_box.rts".into())
-        .unwrap_or_else(|_| panic!("cannot read {}", path.display()));
-    let text = sources.get(id).text.clone();
-    let (file, _) = rts::syntax::parse(&text, id);
-    let scene = eval::eval(&file, id, &mut sources, &EvalOptions::default()).scene;
-    rts::build::build(&scene)
+    common::example_world("cornell_box.rts")
 }
 
 fn render(c: &mut Criterion) {

@@ -4,21 +4,13 @@
 //! throughput is counted in camera pixels; `rts render --stats-json` gives rays/s.
 //! Run with `cargo bench --bench sampling`.
 
+mod common;
+
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use rts::eval::{self, EvalOptions};
 use rts::render::{render_with, Antialias, RenderOptions, Sampling, Settings};
-use rts::source::SourceMap;
-use std::path::Path;
 
 fn showcase() -> rts::build::World {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/showcase.rts");
-    let mut sources = SourceMap::new();
-    let id = eval::load_file(&mut sources, &path, "showcase.rts".into())
-        .unwrap_or_else(|_| panic!("cannot read {}", path.display()));
-    let text = sources.get(id).text.clone();
-    let (file, _) = rts::syntax::parse(&text, id);
-    let scene = eval::eval(&file, id, &mut sources, &EvalOptions::default()).scene;
-    rts::build::build(&scene)
+    common::example_world("showcase.rts")
 }
 
 fn render(c: &mut Criterion) {

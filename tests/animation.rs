@@ -152,29 +152,13 @@ animation { frames 0, 8  fps 4  clock_range 10, 12 }
     )
     .unwrap();
     let debug = |frame: i64| -> String {
-        let o = rts(
+        let frame = frame.to_string();
+        debug_line(
             &dir,
             &[
-                "render",
-                "keys.rts",
-                "-o",
-                "k.png",
-                "-W",
-                "4",
-                "-H",
-                "4",
-                "-q",
-                "--frame",
-                &frame.to_string(),
-                "--message-format",
-                "short",
+                "render", "keys.rts", "-o", "k.png", "-W", "4", "-H", "4", "-q", "--frame", &frame,
             ],
-        );
-        String::from_utf8_lossy(&o.stdout)
-            .lines()
-            .find(|l| l.contains("rts::scene::debug"))
-            .expect("a #debug line")
-            .to_string()
+        )
     };
     // Frame 0: clock 10; frame 2: clock 10.5; frame 8: clock 12 (seconds 0, 0.5, 2).
     let f0 = debug(0);
@@ -214,28 +198,13 @@ global_settings { assumed_gamma 1.0 }
     )
     .unwrap();
     let line = |args: &[&str]| -> String {
-        let mut a = vec![
-            "render",
-            "c.rts",
-            "-o",
-            "c.png",
-            "-W",
-            "2",
-            "-H",
-            "2",
-            "-q",
-            "--message-format",
-            "short",
-        ];
+        let mut a = vec!["render", "c.rts", "-o", "c.png", "-W", "2", "-H", "2", "-q"];
         a.extend_from_slice(args);
-        let o = rts(&dir, &a);
-        let text = String::from_utf8_lossy(&o.stdout).into_owned();
-        text.lines()
-            .find(|l| l.contains(": V "))
-            .expect("debug")
+        let debug = debug_line(&dir, &a);
+        debug
             .split(": V ")
             .nth(1)
-            .unwrap()
+            .expect("the V values")
             .to_string()
     };
     // The values POV-Ray 3.7 prints for the same settings.
@@ -249,6 +218,18 @@ global_settings { assumed_gamma 1.0 }
         line(&["--frames", "1..5", "--frame", "3", "--cyclic"]),
         "0.4000 0.2000 1 3 1 6 0.00 1.00"
     );
+}
+
+/// The first `#debug` line of `rts ARGS --message-format short` run in `dir`.
+fn debug_line(dir: &Path, args: &[&str]) -> String {
+    let mut a = args.to_vec();
+    a.extend_from_slice(&["--message-format", "short"]);
+    let o = rts(dir, &a);
+    String::from_utf8_lossy(&o.stdout)
+        .lines()
+        .find(|l| l.contains("rts::scene::debug"))
+        .expect("a #debug line")
+        .to_string()
 }
 
 /// Renders ORBIT's frames into `sub` with `extra` options; returns stderr.
