@@ -12,8 +12,7 @@ pub(super) fn translucent(primitives: &[Primitive]) -> Vec<bool> {
         match &p.pattern {
             Pattern::Solid(c) => c.filter + c.transmit > 0.0,
             Pattern::Checker(pair) => pair.iter().any(pigment),
-            // Outside a `once` map is see-through; inside, the pixels decide.
-            Pattern::Image(m) => m.once || m.pixels.iter().any(|c| c.filter + c.transmit > 0.0),
+            Pattern::Image(m) => m.see_through,
             Pattern::Mapped(m) => match &m.map {
                 PatternMap::Colours(e) => e.iter().any(|(_, c)| c.filter + c.transmit > 0.0),
                 PatternMap::Pigments(e) => e.iter().any(|(_, p)| pigment(p)),

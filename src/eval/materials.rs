@@ -437,6 +437,7 @@ impl Evaluator<'_> {
             interpolate: false,
             once: false,
             uv_mapping: false,
+            see_through: false,
         };
         let mut filter_all: Option<f64> = None;
         let mut transmit_all: Option<f64> = None;
@@ -527,6 +528,7 @@ impl Evaluator<'_> {
                 }
             })
             .collect();
+        im.see_through = im.once || im.pixels.iter().any(|c| c.filter + c.transmit > 0.0);
         Ok(Pigment {
             pattern: Pattern::Image(Arc::new(im)),
             transform: None,

@@ -277,6 +277,9 @@ pub struct ImageMap {
     pub once: bool,
     /// `uv_mapping`: look up by the surface's uv instead of the point.
     pub uv_mapping: bool,
+    /// Whether light may pass: a pixel has filter or transmit, or the map is
+    /// `once` (clear outside the unit square). Set once the pixels are known.
+    pub see_through: bool,
 }
 
 /// `normal { PATTERN [bump_size] modifiers transforms }`.

@@ -84,6 +84,7 @@ mod tests {
             interpolate: false,
             once: false,
             uv_mapping: false,
+            see_through: false,
         }
     }
 
@@ -102,6 +103,7 @@ mod tests {
     fn once_is_clear_outside() {
         let im = ImageMap {
             once: true,
+            see_through: true,
             ..two_by_two()
         };
         assert_eq!(lookup(&im, DVec3::new(1.5, 0.5, 0.0), None).transmit, 1.0);
