@@ -30,10 +30,6 @@ use std::sync::atomic::Ordering;
 
 /// Standard deviation of the Gaussian pixel filter, in pixels.
 pub const GAUSSIAN_SIGMA: f64 = 0.5;
-/// Radius at which the Gaussian pixel filter is cut off, in pixels (for
-/// [`filter_offset`]; the splatting filter of [`render_samples`] reaches
-/// [`SPLAT_RADIUS`]).
-pub const GAUSSIAN_RADIUS: f64 = 1.5;
 /// Radius of the splatted Gaussian (4σ, as Mitsuba's `gaussian` filter).
 pub const SPLAT_RADIUS: f64 = 4.0 * GAUSSIAN_SIGMA;
 
@@ -125,22 +121,6 @@ impl Accum {
             *p = p.normalize_or_zero();
         }
         f
-    }
-}
-
-/// Offset in the pixel (0..1 for the box; around 0.5 for the Gaussian) of a sample
-/// from a point on the unit square. The Gaussian is sampled exactly (radially,
-/// truncated at [`GAUSSIAN_RADIUS`]) so every sample has weight one.
-pub fn filter_offset(filter: PixelFilter, (u, v): (f64, f64)) -> (f64, f64) {
-    match filter {
-        PixelFilter::Box => (u, v),
-        PixelFilter::Gaussian => {
-            let s2 = 2.0 * GAUSSIAN_SIGMA * GAUSSIAN_SIGMA;
-            let cut = 1.0 - (-GAUSSIAN_RADIUS * GAUSSIAN_RADIUS / s2).exp();
-            let r = (-s2 * (1.0 - u * cut).ln()).max(0.0).sqrt();
-            let (c, s) = bsdf::turn(v);
-            (0.5 + r * c, 0.5 + r * s)
-        }
     }
 }
 
@@ -237,7 +217,7 @@ fn render_box(
                 let x = crop.x0 + i as u32;
                 for k in first..first + n {
                     let mut s = Sampler::new(settings.seed, settings.frame, x, y, k);
-                    let off = filter_offset(PixelFilter::Box, s.next_2d());
+                    let off = s.next_2d();
                     if let Some(r) = camera_sample(sc, opts, popts, (x, y), off, &mut s, &mut st) {
                         sum[i] += r.radiance;
                         alb[i] += r.albedo;
@@ -496,23 +476,5 @@ mod tests {
         // Interior pixels get weight one; the border ones are scaled up.
         assert_eq!(sp.border(10, 20), 1.0);
         assert!(sp.border(0, 20) > 1.0 && (sp.border(19, 20) - sp.border(0, 20)).abs() < 1e-12);
-    }
-
-    #[test]
-    fn gaussian_offsets_stay_within_the_cut_off_and_centre_on_the_pixel() {
-        let mut mean = (0.0, 0.0);
-        let n = 1000;
-        for i in 0..n {
-            let mut s = Sampler::new(1, 0, 2, 3, i);
-            let (x, y) = filter_offset(PixelFilter::Gaussian, s.next_2d());
-            let r = ((x - 0.5).powi(2) + (y - 0.5).powi(2)).sqrt();
-            assert!(r <= GAUSSIAN_RADIUS + 1e-12);
-            mean.0 += x / f64::from(n);
-            mean.1 += y / f64::from(n);
-        }
-        assert!(
-            (mean.0 - 0.5).abs() < 0.02 && (mean.1 - 0.5).abs() < 0.02,
-            "{mean:?}"
-        );
     }
 }
