@@ -7,6 +7,7 @@
 //! move with its children's own transforms, as in POV-Ray.
 
 mod aabb;
+mod binary;
 mod bvh;
 pub mod csg;
 pub mod mesh;
@@ -15,6 +16,7 @@ mod ray;
 mod shape;
 pub mod shapes;
 mod transparency;
+mod wide;
 
 pub use aabb::Aabb;
 pub use bvh::Bvh;
