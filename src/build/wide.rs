@@ -147,12 +147,18 @@ pub(super) fn traverse(
     let mut stack = Stack::new();
     let mut node = 0usize;
     loop {
-        let (mask, dist) = lanes.hit(&nodes[node], near, Vec4::splat(far32));
+        let n = &nodes[node];
+        let (mask, dist) = lanes.hit(n, near, Vec4::splat(far32));
         let mut next = None;
         if mask & mask.wrapping_sub(1) == 0 {
-            // One lane or none: no ordering.
+            // One lane or none: no ordering; an inner node is entered at once.
             if mask != 0 {
-                next = Some(((node as u64) << 2) | u64::from(mask.trailing_zeros()));
+                let lane = mask.trailing_zeros() as usize;
+                if n.count[lane] == 0 {
+                    node = n.child[lane] as usize;
+                    continue;
+                }
+                next = Some(((node as u64) << 2) | lane as u64);
             }
         } else {
             // Push all but the nearest, farthest first.
