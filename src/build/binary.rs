@@ -1,8 +1,9 @@
-//! The world's hierarchy as traversal walks it: the binary SAH tree with its
-//! (f32, outward-rounded) bounds widened to f64, tested one box at a time in the
-//! ray's own precision. World trees are small (one primitive a leaf), so they
-//! stay in cache; here the two-child walk, whose branches let the processor run
-//! ahead, measured faster than the 4-wide one meshes use (see [`super::wide`]).
+//! The world's hierarchy (and a small mesh's) as traversal walks it: the binary
+//! SAH tree with its (f32, outward-rounded) bounds widened to f64, tested one box
+//! at a time in the ray's own precision. World trees are small (one primitive a
+//! leaf), so they stay in cache; here the two-child walk, whose branches let the
+//! processor run ahead, measured faster than the 4-wide one large meshes use (see
+//! [`super::wide`]).
 
 use super::bvh::Node;
 use super::Ray;

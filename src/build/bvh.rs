@@ -1,6 +1,8 @@
 //! A bounding volume hierarchy built with binned SAH, in parallel near the root.
 //! Nodes hold f32 bounds rounded outwards (32 bytes a node), so a mesh of a
-//! million triangles keeps its tree small; rays stay f64.
+//! million triangles keeps its tree small; rays stay f64. The built binary tree
+//! is then laid out for its walk: widened to f64 (the world's and small meshes',
+//! [`super::binary`]) or collapsed to 4-wide nodes (large meshes', [`super::wide`]).
 
 use super::binary::{self, Node64};
 use super::wide::{self, Wide};

@@ -1,6 +1,6 @@
-//! The hierarchy as traversal walks it: the binary SAH tree collapsed into nodes
-//! of up to four children whose boxes are tested together, one f32 lane each
-//! (SSE through glam's `Vec4`). The binary tree's f32 bounds are already rounded
+//! A large mesh's hierarchy as traversal walks it: the binary SAH tree collapsed
+//! into nodes of up to four children whose boxes are tested together, one f32
+//! lane each (SSE through glam's `Vec4`). The binary tree's f32 bounds are already rounded
 //! outwards; the ray's f64 origin and direction are rounded so that every box
 //! test errs towards a hit (see [`Lanes::new`]), never towards a miss.
 
@@ -9,7 +9,7 @@ use glam::Vec4;
 use super::Ray;
 
 /// The box of an empty lane: all at +∞, so a ray enters it at +∞ or leaves it at
-/// −∞, and far limits are finite (see [`up`]).
+/// −∞, and far limits are finite (see [`far`]).
 const EMPTY_LANE: [[Vec4; 3]; 2] = [[Vec4::INFINITY; 3]; 2];
 
 /// One node of up to four children. A lane is an inner node (`count == 0`,
