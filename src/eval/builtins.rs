@@ -69,6 +69,8 @@ pub const BUILTIN_NAMES: &[&str] = &[
     "vcross",
     "vrotate",
     "vaxis_rotate",
+    "vtransform",
+    "vinv_transform",
     "seed",
     "rand",
     "str",
@@ -358,6 +360,21 @@ impl Evaluator<'_> {
                 let m = DMat3::from_axis_angle(axis.normalize(), deg.to_radians());
                 Ok(Value::Vector(Vector::v3(m * a)))
             }
+            "vtransform" | "vinv_transform" => {
+                // POV-Ray's transforms.inc macros, built in: rts has no
+                // functions for them to be written with.
+                arity(2, 2)?;
+                let p = self.to_vec3(&args[0].0, args[0].1)?;
+                let Value::Transform(t) = &args[1].0 else {
+                    return Err(self.mismatch("a transform", &args[1].0, args[1].1));
+                };
+                let m = if name == "vtransform" {
+                    t.matrix
+                } else {
+                    t.inverse
+                };
+                Ok(Value::Vector(Vector::v3(m.transform_point3(p))))
+            }
             "seed" => {
                 arity(1, 1)?;
                 let s = f(0)?;
@@ -546,6 +563,7 @@ pub fn signature(name: &str) -> String {
         "vdot" | "vcross" => format!("{name}(V1, V2)"),
         "vrotate" => "vrotate(V, <ROTX, ROTY, ROTZ>)".into(),
         "vaxis_rotate" => "vaxis_rotate(V, AXIS, DEGREES)".into(),
+        "vtransform" | "vinv_transform" => format!("{name}(V, TRANSFORM)"),
         "str" => "str(VALUE, LENGTH, PRECISION)".into(),
         "vstr" => "vstr(N, V, SEPARATOR, LENGTH, PRECISION)".into(),
         "concat" => "concat(S1, S2, …)".into(),

@@ -297,13 +297,21 @@ impl Evaluator<'_> {
             .map(|s| &**s)
             .chain(builtins::BUILTIN_NAMES.iter().copied())
             .chain(keywords.iter().copied());
+        // A functions.inc-like name is "not implemented" unless it looks like
+        // a misspelt name the scene declared.
+        if did_you_mean(&text, names.iter().map(|s| &**s)).is_none() {
+            if let Some(d) = super::items::pov_function(&text, span) {
+                return d;
+            }
+        }
+        let suggestion = did_you_mean(&text, cands);
         let mut d = Diagnostic::error(
             codes::UNKNOWN_IDENTIFIER,
             span,
             format!("unknown identifier `{text}`"),
         )
         .with_label("not declared");
-        if let Some(s) = did_you_mean(&text, cands) {
+        if let Some(s) = suggestion {
             d = d.with_help(format!("did you mean `{s}`?"));
         } else if text.chars().next().is_some_and(char::is_uppercase) {
             d = d.with_help(format!(

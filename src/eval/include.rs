@@ -13,12 +13,16 @@ pub const STDLIB: &[(&str, &str)] = &[
     ("colors.inc", include_str!("../stdlib/colors.inc")),
     ("consts.inc", include_str!("../stdlib/consts.inc")),
     ("finish.inc", include_str!("../stdlib/finish.inc")),
+    ("functions.inc", include_str!("../stdlib/functions.inc")),
     ("glass.inc", include_str!("../stdlib/glass.inc")),
+    ("golds.inc", include_str!("../stdlib/golds.inc")),
+    ("math.inc", include_str!("../stdlib/math.inc")),
     ("metals.inc", include_str!("../stdlib/metals.inc")),
     ("shapes.inc", include_str!("../stdlib/shapes.inc")),
     ("shapes2.inc", include_str!("../stdlib/shapes2.inc")),
     ("stones.inc", include_str!("../stdlib/stones.inc")),
     ("textures.inc", include_str!("../stdlib/textures.inc")),
+    ("transforms.inc", include_str!("../stdlib/transforms.inc")),
     ("woods.inc", include_str!("../stdlib/woods.inc")),
 ];
 

@@ -334,13 +334,21 @@ impl Evaluator<'_> {
                         .copied(),
                 );
                 let text = name.name();
+                // A functions.inc-like name is "not implemented" unless it looks
+                // like a misspelt macro the scene declared.
+                if did_you_mean(&text, names.iter().map(|s| &**s)).is_none() {
+                    if let Some(d) = pov_function(&text, name_span) {
+                        return Err(d.into());
+                    }
+                }
+                let suggestion = did_you_mean(&text, cands);
                 Err(Diagnostic::error(
                     codes::UNKNOWN_IDENTIFIER,
                     name_span,
                     format!("unknown macro or function `{text}`"),
                 )
                 .with_label("not defined")
-                .with_help(match did_you_mean(&text, cands) {
+                .with_help(match suggestion {
                     Some(s) => format!("did you mean `{s}`?"),
                     None => format!("define it with `#macro {text}(…) … #end` before calling it"),
                 })
@@ -363,4 +371,20 @@ impl Evaluator<'_> {
             _ => Err(Diagnostic::error(codes::ARITY, span, "`defined` takes one name").into()),
         }
     }
+}
+
+/// For an undeclared name like POV-Ray's functions.inc ones (`f_` and a lower-case
+/// letter: `f_noise3d`, `f_rounded_box`): the diagnostic that says functions are
+/// not implemented, instead of "unknown identifier".
+pub(crate) fn pov_function(name: &str, span: Span) -> Option<Diagnostic> {
+    let rest = name.strip_prefix("f_")?;
+    rest.starts_with(|c: char| c.is_ascii_lowercase()).then(|| {
+        Diagnostic::error(
+            codes::UNSUPPORTED,
+            span,
+            format!("`{name}` looks like one of POV-Ray's functions.inc functions; functions are not implemented in rts yet"),
+        )
+        .with_label("not implemented yet")
+        .with_help("see docs/language.md for what this release supports")
+    })
 }

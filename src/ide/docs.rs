@@ -1220,6 +1220,16 @@ pub const DOCS: &[Doc] = &[
         "V rotated DEG degrees about AXIS.",
     ),
     func(
+        "vtransform",
+        "vtransform(V, TRANSFORM)",
+        "The point V moved by TRANSFORM (as transforms.inc's vtransform).",
+    ),
+    func(
+        "vinv_transform",
+        "vinv_transform(V, TRANSFORM)",
+        "The point V moved by the inverse of TRANSFORM (as transforms.inc's vinv_transform).",
+    ),
+    func(
         "seed",
         "seed(N)",
         "A random stream for rand, seeded with N.",
