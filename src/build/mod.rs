@@ -420,6 +420,13 @@ impl Builder {
             Shape::Quadric { coefficients } => {
                 PrimShape::Quadric(shapes::surface::Quadric(*coefficients))
             }
+            Shape::Poly {
+                order,
+                coefficients,
+            } => match shapes::poly::Poly::new(*order, coefficients) {
+                Some(p) => PrimShape::Poly(Arc::new(p)),
+                None => empty(),
+            },
             Shape::Polyhedron { planes } => PrimShape::Polyhedron(planes.clone().into()),
             Shape::Mesh(m) => PrimShape::Mesh(self.mesh(m)),
             Shape::Union { .. } | Shape::Csg { .. } => empty(),

@@ -3,6 +3,7 @@
 use super::csg::Csg;
 use super::mesh::MeshAccel;
 use super::shapes::flat::{self, Polygon};
+use super::shapes::poly::Poly;
 use super::shapes::quadric::Frustum;
 use super::shapes::surface::Quadric;
 use super::shapes::{solid, torus};
@@ -72,6 +73,8 @@ pub enum PrimShape {
     },
     /// A `quadric` surface (unbounded).
     Quadric(Quadric),
+    /// A `poly`, `cubic` or `quartic` surface (unbounded).
+    Poly(Arc<Poly>),
     /// A disc (annulus).
     Disc {
         /// Centre.
@@ -222,6 +225,7 @@ impl PrimShape {
                 }
             }
             PrimShape::Quadric(q) => q.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
+            PrimShape::Poly(q) => q.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
             PrimShape::Mesh(m) => m.intersect(ray, t_min, t_max).map(|(t, i)| (t, 0, i)),
             PrimShape::Csg(c) => c.intersect(ray, t_min, t_max),
             PrimShape::Frustum(_) | PrimShape::Torus { .. } => {
@@ -269,6 +273,7 @@ impl PrimShape {
             }
             PrimShape::Mesh(m) => m.hits(ray, t_min, t_max, f),
             PrimShape::Quadric(q) => q.hits(ray, t_min, t_max, &mut |t| f(t, 0)),
+            PrimShape::Poly(q) => q.hits(ray, t_min, t_max, &mut |t| f(t, 0)),
             _ => {
                 if let Some((t, _, sub)) = self.intersect(ray, t_min, t_max) {
                     f(t, sub)
@@ -289,6 +294,7 @@ impl PrimShape {
             PrimShape::Torus { major, .. } => torus::normal(*major, p),
             PrimShape::Disc { normal, .. } => *normal,
             PrimShape::Quadric(q) => q.normal(p),
+            PrimShape::Poly(q) => q.normal(p),
             PrimShape::Polygon(pg) => pg.normal,
             PrimShape::Polyhedron(planes) => planes.get(sub as usize).map_or(DVec3::Y, |pl| pl.0),
             PrimShape::Mesh(m) => m.normal(sub),
@@ -339,6 +345,7 @@ impl PrimShape {
             PrimShape::Torus { major, minor } => torus::inside(*major, *minor, p),
             PrimShape::Polyhedron(planes) => solid::inside(planes, p),
             PrimShape::Quadric(q) => q.inside(p),
+            PrimShape::Poly(q) => q.inside(p),
             PrimShape::Mesh(m) => m.inside(p),
             PrimShape::Csg(c) => c.inside(p),
             PrimShape::Triangle { .. }
@@ -351,7 +358,7 @@ impl PrimShape {
     /// Bounds in this shape's space; `None` when unbounded.
     pub fn local_bounds(&self) -> Option<Aabb> {
         Some(match self {
-            PrimShape::Plane { .. } | PrimShape::Quadric(_) => return None,
+            PrimShape::Plane { .. } | PrimShape::Quadric(_) | PrimShape::Poly(_) => return None,
             PrimShape::Sphere { center, radius } => Aabb::new(
                 *center - DVec3::splat(*radius),
                 *center + DVec3::splat(*radius),

@@ -19,6 +19,9 @@ pub(crate) const BLOCKS: &[&str] = &[
     "height_field",
     "torus",
     "quadric",
+    "poly",
+    "cubic",
+    "quartic",
     "disc",
     "smooth_triangle",
     "polygon",
@@ -120,12 +123,16 @@ impl Evaluator<'_> {
             return self.camera_path(b).map(Some);
         }
         let mut toks = Sink::new();
+        let lists = matches!(kw, "poly" | "cubic" | "quartic");
+        let outer = std::mem::replace(&mut self.coefficient_lists, lists);
         self.expand(&b.items, &mut toks);
+        self.coefficient_lists = outer;
         let mut c = Cursor::new(toks.toks, kw, b.span);
         Ok(Some(match kw {
             "sphere" | "plane" | "box" | "triangle" | "union" | "object" | "cylinder" | "cone"
-            | "torus" | "quadric" | "disc" | "height_field" | "smooth_triangle" | "polygon"
-            | "mesh" | "mesh2" | "polyhedron" | "merge" | "intersection" | "difference" => {
+            | "torus" | "quadric" | "poly" | "cubic" | "quartic" | "disc" | "height_field"
+            | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "polyhedron" | "merge"
+            | "intersection" | "difference" => {
                 Value::Object(std::sync::Arc::new(self.object(&mut c)?))
             }
             "clipped_by" | "bounded_by" | "vertex_vectors" | "normal_vectors" | "uv_vectors"

@@ -40,13 +40,25 @@ impl Evaluator<'_> {
                     .into()),
                 }
             }
+            ExprKind::Vector(parts) if self.coefficient_lists && parts.len() > 5 => {
+                // A `poly`/`cubic`/`quartic` coefficient list.
+                let mut elems = Vec::with_capacity(parts.len());
+                for p in parts {
+                    let v = self.expr(p)?;
+                    elems.push(Some(Value::Float(self.to_float(&v, p.span)?)));
+                }
+                Ok(Value::Array(Rc::new(Array {
+                    dims: vec![elems.len()],
+                    elems,
+                })))
+            }
             ExprKind::Vector(parts) => {
                 if parts.len() < 2 || parts.len() > 5 {
                     return Err(Diagnostic::error(
                         codes::TYPE_MISMATCH,
                         e.span,
                         format!(
-                            "a vector has 2 to 5 components (12 after `matrix`), this one has {}",
+                            "a vector has 2 to 5 components (12 after `matrix`, more in `poly`), this one has {}",
                             parts.len()
                         ),
                     )
@@ -722,7 +734,6 @@ const POV_KEYWORDS_NOT_YET: &[&str] = &[
     "boxed",
     "cells",
     "crackle",
-    "cubic",
     "cylindrical",
     "density_file",
     "facets",
@@ -733,7 +744,6 @@ const POV_KEYWORDS_NOT_YET: &[&str] = &[
     "pavement",
     "pigment_pattern",
     "planar",
-    "poly",
     "quilted",
     "slope",
     "spiral1",

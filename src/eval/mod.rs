@@ -193,6 +193,7 @@ pub fn eval_cached(
         parsed_includes: std::mem::take(&mut cache.parsed_includes),
         mesh_cache: std::mem::take(&mut cache.meshes),
         data_files: Default::default(),
+        coefficient_lists: false,
     };
     ev.define_command_line();
     ev.run_top(&file.items);
@@ -248,6 +249,10 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) mesh_cache: mesh_cache::MeshCache,
     /// Data files found (for the animation manifest's scene hash).
     pub(crate) data_files: std::cell::RefCell<Vec<PathBuf>>,
+    /// Set while the items of a `poly`, `cubic` or `quartic` block are read:
+    /// there, a vector of more than 5 numbers (other than a 12-number matrix) is
+    /// a list of coefficients (a one-dimensional array).
+    pub(crate) coefficient_lists: bool,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps

@@ -170,6 +170,7 @@ impl Evaluator<'_> {
                 k[9] = self.take_float(c, "J: the constant term")?;
                 Shape::Quadric { coefficients: k }
             }
+            "poly" | "cubic" | "quartic" => self.poly(c)?,
             "torus" => {
                 let (v, s0) = c.value("the torus's major radius")?;
                 let major = self.to_float(&v, s0)?;
@@ -287,6 +288,74 @@ impl Evaluator<'_> {
     }
 
     /// `polyhedron { vertex_vectors { [N,] V… } face_indices { [N,] <I, J, K…>… } }`.
+    /// `poly { ORDER, <…> }`, `cubic { <20 numbers> }`, `quartic { <35 numbers> }`.
+    fn poly(&mut self, c: &mut Cursor) -> R<Shape> {
+        use crate::build::shapes::poly::{term_count, MAX_ORDER};
+        let order = match c.block {
+            "cubic" => 3,
+            "quartic" => 4,
+            _ => {
+                let (v, s) = c.value("the order, 2 to 4")?;
+                let n = self.to_float(&v, s)?;
+                c.comma();
+                if n.fract() != 0.0 || !(2.0..=7.0).contains(&n) {
+                    return Err(Diagnostic::error(
+                        codes::OUT_OF_RANGE,
+                        s,
+                        format!("a poly's order is a whole number from 2 to 7, found {n}"),
+                    )
+                    .with_help("write the order first: `poly { 4, <…> }`")
+                    .into());
+                }
+                if n as u32 > MAX_ORDER {
+                    return Err(Diagnostic::error(
+                        codes::UNSUPPORTED,
+                        s,
+                        format!(
+                            "poly of order {n} is not implemented in rts yet (orders 2 to 4 are)"
+                        ),
+                    )
+                    .with_label("not implemented yet")
+                    .with_help("see docs/language.md for what this release supports")
+                    .into());
+                }
+                n as u32
+            }
+        };
+        let want = term_count(order);
+        let (v, s) = c.value("the coefficients `<…>`")?;
+        let coefficients: Vec<f64> = match &v {
+            Value::Array(a) if a.dims.len() == 1 => a
+                .elems
+                .iter()
+                .map(|e| match e {
+                    Some(Value::Float(f)) => Some(*f),
+                    _ => None,
+                })
+                .collect::<Option<_>>()
+                .ok_or_else(|| self.mismatch("numbers", &v, s))?,
+            Value::Vector(x) => x.c[..usize::from(x.len)].to_vec(),
+            other => return Err(self.mismatch(&format!("{want} coefficients `<…>`"), other, s)),
+        };
+        if coefficients.len() != want {
+            return Err(Diagnostic::error(
+                codes::INVALID_SIZE,
+                s,
+                format!(
+                    "a polynomial of order {order} has {want} coefficients, this list has {}",
+                    coefficients.len()
+                ),
+            )
+            .with_label("wrong count")
+            .with_help("list every term's coefficient, zeros included, in POV-Ray's order (see docs/language.md)")
+            .into());
+        }
+        Ok(Shape::Poly {
+            order,
+            coefficients,
+        })
+    }
+
     fn polyhedron(&mut self, c: &mut Cursor) -> R<Shape> {
         let head = c.span.head();
         let missing = |what: &str, ex: &str| -> Fail {

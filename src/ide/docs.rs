@@ -295,6 +295,26 @@ pub const DOCS: &[Doc] = &[
         "A second-order surface.",
     ),
     kw(
+        "poly",
+        "poly { ORDER, <C1, C2, …> [sturm] … }",
+        "The surface where a polynomial of order 2 to 4 in x, y, z is zero.",
+    ),
+    kw(
+        "cubic",
+        "cubic { <20 coefficients> [sturm] … }",
+        "A third-order polynomial surface (poly { 3, … }).",
+    ),
+    kw(
+        "quartic",
+        "quartic { <35 coefficients> [sturm] … }",
+        "A fourth-order polynomial surface (poly { 4, … }), e.g. a torus.",
+    ),
+    kw(
+        "sturm",
+        "sturm",
+        "Accepted on poly, cubic, quartic and torus: rts's root solver is always the careful one.",
+    ),
+    kw(
         "mesh",
         "mesh { triangle { … } … }",
         "A mesh of triangles, or obj_file / ply_file.",

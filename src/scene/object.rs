@@ -133,6 +133,16 @@ pub enum Shape {
         /// The coefficients `A … J`.
         coefficients: [f64; 10],
     },
+    /// `poly { ORDER, <A, B, …> }`, `cubic { <20 numbers> }`, `quartic { <35 numbers> }`:
+    /// the surface where a polynomial in x, y, z is zero, inside where it is
+    /// negative; coefficients in POV-Ray's order (terms by falling power of x, then
+    /// y, then z); unbounded. `sturm` is accepted after the coefficients.
+    Poly {
+        /// 2 to 4.
+        order: u32,
+        /// `(order+1)(order+2)(order+3)/6` coefficients.
+        coefficients: Vec<f64>,
+    },
     /// `disc { CENTER, NORMAL, RADIUS [, HOLE_RADIUS] }` (not a solid).
     Disc {
         /// Centre.

@@ -2,6 +2,7 @@
 //! shape's own space. One file per family; [`super::PrimShape`] dispatches.
 
 pub mod flat;
+pub mod poly;
 pub mod quadric;
 pub mod solid;
 pub mod surface;
