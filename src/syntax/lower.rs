@@ -504,8 +504,12 @@ impl Lowerer {
 
     fn colour(&mut self, p: P) -> Expr {
         let span = self.span(&p);
-        let mut inner = p.into_inner();
-        let kw = inner.next().expect("colour keyword").as_str();
+        let mut inner = p.into_inner().peekable();
+        // Without a colour keyword (`red 1 green 0.5`) it is a plain `color`.
+        let kw = match inner.peek() {
+            Some(x) if x.as_rule() == Rule::colour_kw => inner.next().expect("peeked").as_str(),
+            _ => "color",
+        };
         let srgb = kw.starts_with('s');
         let form = match kw.trim_start_matches('s') {
             "rgb" => ColourForm::Rgb,
