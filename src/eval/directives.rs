@@ -293,7 +293,7 @@ impl Evaluator<'_> {
             .into()
     }
 
-    fn bind(&mut self, local: bool, target: &LValue, v: Value, span: Span) -> R<()> {
+    pub(crate) fn bind(&mut self, local: bool, target: &LValue, v: Value, span: Span) -> R<()> {
         if target.name.is_builtin() {
             return Err(self.reserved(target.name_span, &target.name.name()));
         }

@@ -23,6 +23,7 @@ pub const STDLIB: &[(&str, &str)] = &[
     ("stones.inc", include_str!("../stdlib/stones.inc")),
     ("textures.inc", include_str!("../stdlib/textures.inc")),
     ("transforms.inc", include_str!("../stdlib/transforms.inc")),
+    ("woodmaps.inc", include_str!("../stdlib/woodmaps.inc")),
     ("woods.inc", include_str!("../stdlib/woods.inc")),
 ];
 

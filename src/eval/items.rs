@@ -5,7 +5,7 @@ use super::value::Value;
 use super::{builtins, Evaluator, Fail, R};
 use crate::diag::{codes, did_you_mean, Diagnostic, Label};
 use crate::span::Span;
-use crate::syntax::ast::{Arg, ExprKind, Item, MacroDef};
+use crate::syntax::ast::{Arg, Block, DirectiveKind, ExprKind, Item, LValue, MacroDef, Rhs};
 use crate::syntax::Sym;
 use std::rc::Rc;
 use std::sync::Arc;
@@ -19,11 +19,25 @@ impl Evaluator<'_> {
 
     /// Expands items into `out`, running directives as they come.
     pub(crate) fn expand(&mut self, items: &[Item], out: &mut Sink) {
-        for item in items {
+        let mut rest = items.iter();
+        while let Some(item) = rest.next() {
             if self.stopped {
                 return;
             }
             self.expand_item(item, out);
+            // `#declare T = texture { A } texture { B } …`: one layered texture (B
+            // over A), as POV-Ray reads the blocks that follow a declared texture.
+            if let Some((local, target)) = declared_texture(item) {
+                while let Some(Item::Block(next)) = rest.clone().next() {
+                    if next.keyword.name != "texture" {
+                        break;
+                    }
+                    rest.next();
+                    if let Err(f) = self.layer_declared(local, target, next) {
+                        self.report(f);
+                    }
+                }
+            }
             if out.top {
                 let toks = std::mem::take(&mut out.toks);
                 for t in toks {
@@ -77,6 +91,20 @@ impl Evaluator<'_> {
                 }
             }
         }
+    }
+
+    /// Lays the texture block `top` over the texture just declared as `target`.
+    fn layer_declared(&mut self, local: bool, target: &LValue, top: &Block) -> R<()> {
+        let below = match self.scope.get(target.name).map(|b| &b.value) {
+            Some(Value::Texture(t)) => Some(t.clone()),
+            // The declaration failed and was reported; keep the name poisoned.
+            _ => return Ok(()),
+        };
+        let Value::Texture(t) = self.block_value(top)? else {
+            return Ok(());
+        };
+        let layered = super::materials::layer_texture(below.as_ref(), t);
+        self.bind(local, target, Value::Texture(layered), top.span)
     }
 
     fn lookup_macro(&self, name: Sym) -> Option<Rc<MacroDef>> {
@@ -387,4 +415,19 @@ pub(crate) fn pov_function(name: &str, span: Span) -> Option<Diagnostic> {
         .with_label("not implemented yet")
         .with_help("see docs/language.md for what this release supports")
     })
+}
+
+/// For `#declare NAME = texture { … }` (or `#local`): whether it is local, and the name.
+fn declared_texture(item: &Item) -> Option<(bool, &LValue)> {
+    let Item::Directive(d) = item else {
+        return None;
+    };
+    match &d.kind {
+        DirectiveKind::Declare {
+            local,
+            target,
+            value: Rhs::Block(b),
+        } if b.keyword.name == "texture" && target.indices.is_empty() => Some((*local, target)),
+        _ => None,
+    }
 }
