@@ -7,3 +7,14 @@ pub mod quadric;
 pub mod solid;
 pub mod surface;
 pub mod torus;
+
+/// The smallest distance `hits` reports (it calls its argument once per crossing).
+pub fn nearest(hits: impl FnOnce(&mut dyn FnMut(f64))) -> Option<f64> {
+    let mut best: Option<f64> = None;
+    hits(&mut |t| {
+        if best.is_none_or(|b| t < b) {
+            best = Some(t)
+        }
+    });
+    best
+}

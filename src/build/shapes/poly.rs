@@ -125,13 +125,7 @@ impl Poly {
 
     /// The nearest crossing in `(t_min, t_max)`.
     pub fn nearest(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<f64> {
-        let mut best: Option<f64> = None;
-        self.hits(ray, t_min, t_max, &mut |t| {
-            if best.is_none_or(|b| t < b) {
-                best = Some(t)
-            }
-        });
-        best
+        super::nearest(|f| self.hits(ray, t_min, t_max, f))
     }
 }
 
