@@ -128,29 +128,48 @@ pub fn turn(u: f64) -> (f64, f64) {
     let q = ((x + 0.5) as i64) as f64; // x ≥ 0: truncation rounds; no libm call
     let a = (x - q) * std::f64::consts::FRAC_PI_2;
     let a2 = a * a;
-    let s = a
-        * (1.0
-            + a2 * (-1.0 / 6.0
-                + a2 * (1.0 / 120.0
-                    + a2 * (-1.0 / 5040.0
-                        + a2 * (1.0 / 362_880.0
-                            + a2 * (-1.0 / 39_916_800.0
-                                + a2 * (1.0 / 6_227_020_800.0
-                                    + a2 * (-1.0 / 1_307_674_368_000.0
-                                        + a2 * (1.0 / 355_687_428_096_000.0)))))))));
-    let c = 1.0
-        + a2 * (-0.5
-            + a2 * (1.0 / 24.0
-                + a2 * (-1.0 / 720.0
-                    + a2 * (1.0 / 40_320.0
-                        + a2 * (-1.0 / 3_628_800.0
-                            + a2 * (1.0 / 479_001_600.0
-                                + a2 * (-1.0 / 87_178_291_200.0
-                                    + a2 * (1.0 / 20_922_789_888_000.0))))))));
+    let s = a * horner(a2, &SIN_SERIES);
+    let c = horner(a2, &COS_SERIES);
     // Rotate by the quarter turns: (cos, sin) of qπ/2 + a.
     let k = (q as i64 & 3) as usize;
     let cs = [c, -s, -c, s];
     (cs[k], cs[(k + 3) & 3])
+}
+
+/// Taylor coefficients of sin(a) / a in powers of a², to degree 16.
+const SIN_SERIES: [f64; 9] = [
+    1.0,
+    -1.0 / 6.0,
+    1.0 / 120.0,
+    -1.0 / 5040.0,
+    1.0 / 362_880.0,
+    -1.0 / 39_916_800.0,
+    1.0 / 6_227_020_800.0,
+    -1.0 / 1_307_674_368_000.0,
+    1.0 / 355_687_428_096_000.0,
+];
+
+/// Taylor coefficients of cos(a) in powers of a², to degree 16.
+const COS_SERIES: [f64; 9] = [
+    1.0,
+    -0.5,
+    1.0 / 24.0,
+    -1.0 / 720.0,
+    1.0 / 40_320.0,
+    -1.0 / 3_628_800.0,
+    1.0 / 479_001_600.0,
+    -1.0 / 87_178_291_200.0,
+    1.0 / 20_922_789_888_000.0,
+];
+
+/// `Σ coeffs[i] xⁱ` by Horner's rule, the highest power innermost.
+#[inline(always)]
+fn horner(x: f64, coeffs: &[f64; 9]) -> f64 {
+    let mut acc = coeffs[8];
+    for i in (0..8).rev() {
+        acc = coeffs[i] + x * acc;
+    }
+    acc
 }
 
 /// SplitMix64's finaliser: a bijective 64-bit mix.
