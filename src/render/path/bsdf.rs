@@ -15,6 +15,7 @@
 use super::super::pigment;
 use super::super::shade::{fresnel, reflection_amount};
 use crate::build::SurfaceHit;
+use crate::render::sampler::turn;
 use crate::scene::{Finish, Interior, Texture};
 use glam::DVec3;
 use std::f64::consts::{FRAC_1_PI, PI};
@@ -487,8 +488,6 @@ pub fn cosine_hemisphere((u1, u2): (f64, f64)) -> DVec3 {
     let (c, s) = turn(u2);
     DVec3::new(r * c, r * s, (1.0 - u1).max(0.0).sqrt())
 }
-
-pub use crate::render::sampler::turn;
 
 /// GGX normal distribution at local half vector `h`.
 pub fn ggx_d(h: DVec3, alpha: f64) -> f64 {

@@ -5,6 +5,7 @@
 
 use crate::build::mesh::MeshAccel;
 use crate::build::{PrimShape, World};
+use crate::render::sampler::turn;
 use crate::scene::{Object, Texture};
 use glam::{DMat3, DMat4, DVec3};
 use rustc_hash::FxHashSet;
@@ -349,7 +350,7 @@ impl Cone {
     fn sample(&self, (u, v): (f64, f64)) -> (DVec3, DVec3) {
         let cos_t = 1.0 - u * self.one_minus_cos;
         let sin_t = (1.0 - cos_t * cos_t).max(0.0).sqrt();
-        let (c, s) = super::bsdf::turn(v);
+        let (c, s) = turn(v);
         let (t, b) = self.axis.any_orthonormal_pair();
         let w = sin_t * c * t + sin_t * s * b + cos_t * self.axis;
         let disc = self.radius * self.radius - self.dist * self.dist * sin_t * sin_t;
@@ -387,7 +388,7 @@ fn sample_shape(s: &Sampled, (u, v): (f64, f64)) -> (DVec3, DVec3) {
         Sampled::Sphere { center, radius } => {
             let z = 1.0 - 2.0 * u;
             let r = (1.0 - z * z).max(0.0).sqrt();
-            let (c, s) = super::bsdf::turn(v);
+            let (c, s) = turn(v);
             let d = DVec3::new(r * c, r * s, z);
             (*center + *radius * d, d)
         }
@@ -398,7 +399,7 @@ fn sample_shape(s: &Sampled, (u, v): (f64, f64)) -> (DVec3, DVec3) {
             hole2,
         } => {
             let r = (hole2 + u * (r2 - hole2)).sqrt();
-            let (c, s) = super::bsdf::turn(v);
+            let (c, s) = turn(v);
             let (t, b) = normal.any_orthonormal_pair();
             (*center + r * (c * t + s * b), *normal)
         }
