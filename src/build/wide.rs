@@ -207,7 +207,7 @@ pub(super) fn traverse(
 /// The hit lanes (bits of `mask`) of node `at`, nearest first, each as one
 /// sortable number: its entry distance's bits above (non-negative f32s order as
 /// their bits do), `at * 4 + lane` below. Missed lanes are `u64::MAX`, last.
-/// Kept in registers: sorting structs through memory stalled store forwarding.
+/// One number per lane, so the sort is a few branch-free min/max steps.
 #[inline(always)]
 pub(super) fn ordered(at: usize, mask: u32, dist: Vec4) -> [u64; 4] {
     // (Indexing the `Vec4` itself is a `match`: a mispredicted jump per lane.)
