@@ -31,12 +31,18 @@ pub(crate) const FOG_ITEMS: &[&str] = &[
 ];
 
 impl Evaluator<'_> {
-    /// `sky_sphere { pigment { … } … transforms }`: sets the scene's sky sphere.
-    pub(crate) fn sky_sphere(&mut self, c: &mut Cursor) -> R<()> {
+    /// `sky_sphere { [SKY_SPHERE_IDENTIFIER] pigment { … } … transforms }`: a sky
+    /// sphere (placed in the scene at top level, or declared).
+    pub(crate) fn sky_sphere(&mut self, c: &mut Cursor) -> R<SkySphere> {
         let mut sky = SkySphere {
             pigments: Vec::new(),
             transform: None,
         };
+        if let Some(Tok::Val(Value::SkySphere(_), _)) = c.peek() {
+            if let Some(Tok::Val(Value::SkySphere(s), _)) = c.next() {
+                sky = (*s).clone();
+            }
+        }
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
                 Tok::Block(_, Value::Pigment(p), _) => {
@@ -67,14 +73,13 @@ impl Evaluator<'_> {
             .with_help("write `sky_sphere { pigment { gradient y color_map { … } } }`")
             .into());
         }
-        self.scene.atmosphere.sky_sphere = Some(sky);
-        Ok(())
+        Ok(sky)
     }
 
     /// `fog { [fog_type 1|2] distance D COLOUR [fog_offset O fog_alt A up V]
-    /// [turbulence T turb_depth D octaves N omega W lambda L] }`: adds a fog to the
-    /// scene.
-    pub(crate) fn fog(&mut self, c: &mut Cursor) -> R<()> {
+    /// [turbulence T turb_depth D octaves N omega W lambda L] }`, optionally starting
+    /// from a declared fog: a fog (added to the scene at top level, or declared).
+    pub(crate) fn fog(&mut self, c: &mut Cursor) -> R<Fog> {
         let mut ty = 1.0;
         let mut distance = None;
         let mut colour = None;
@@ -86,6 +91,23 @@ impl Evaluator<'_> {
             omega: 0.5,
             lambda: 2.0,
         };
+        if let Some(Tok::Val(Value::Fog(_), _)) = c.peek() {
+            if let Some(Tok::Val(Value::Fog(f), _)) = c.next() {
+                distance = Some(f.distance);
+                colour = Some(f.colour);
+                if let FogKind::Ground {
+                    offset: o,
+                    alt: a,
+                    up: u,
+                } = f.kind
+                {
+                    (ty, offset, alt, up) = (2.0, o, a, u);
+                }
+                if let Some(t) = f.turbulence {
+                    turb = t;
+                }
+            }
+        }
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
                 Tok::Val(Value::Colour(_), _) => {
@@ -208,13 +230,12 @@ impl Evaluator<'_> {
         } else {
             FogKind::Constant
         };
-        self.scene.atmosphere.fogs.push(Fog {
+        Ok(Fog {
             kind,
             distance,
             colour: colour.unwrap_or(crate::scene::Colour::BLACK),
             turbulence: (turb.amount != DVec3::ZERO).then_some(turb),
-        });
-        Ok(())
+        })
     }
 
     /// `looks_like { OBJECT }`: the object.
