@@ -149,6 +149,8 @@ pub enum Value {
     SkySphere(Arc<crate::scene::SkySphere>),
     /// A `fog { … }`.
     Fog(Arc<crate::scene::Fog>),
+    /// A `material { … }`.
+    Material(Arc<super::material_block::Material>),
     /// A transform.
     Transform(Arc<Transform>),
     /// `reflection { … }` (only meaningful inside a finish).
@@ -192,6 +194,7 @@ impl Value {
             Value::Light(_) => "a light source",
             Value::SkySphere(_) => "a sky_sphere",
             Value::Fog(_) => "a fog",
+            Value::Material(_) => "a material",
             Value::Transform(_) => "a transform",
             Value::Reflection(_) => "a reflection block",
             Value::Normal(_) => "a normal",
