@@ -363,18 +363,34 @@ impl Evaluator<'_> {
         use crate::build::shapes::prism::{outline, Spline, Tail};
         let mut spline = Spline::Linear;
         let mut conic = false;
+        let (mut spline_kw, mut sweep_kw): (Option<(&str, Span)>, Option<(&str, Span)>) =
+            (None, None);
         while let Some(Tok::Kw(kw, span)) = c.peek() {
             let (kw, span) = (*kw, *span);
             c.next();
-            if let Some(s) = Spline::from_keyword(kw) {
-                c.once("spline type", span)?;
+            let (seen, what) = if let Some(s) = Spline::from_keyword(kw) {
                 spline = s;
+                (&mut spline_kw, "spline type")
             } else if kw == "linear_sweep" || kw == "conic_sweep" {
-                c.once("sweep type", span)?;
                 conic = kw == "conic_sweep";
-            } else if kw != "sturm" {
+                (&mut sweep_kw, "sweep type")
+            } else if kw == "sturm" {
+                continue;
+            } else {
                 return Err(self.unknown_keyword(c, kw, span, PRISM_ITEMS));
+            };
+            if let Some((first, first_span)) = *seen {
+                return Err(Diagnostic::error(
+                    codes::DUPLICATE_PARAMETER,
+                    span,
+                    format!("a prism has one {what}, and `{first}` is already given"),
+                )
+                .with_label(format!("second {what}"))
+                .with_secondary(first_span, "first")
+                .with_help(format!("keep one of `{first}` and `{kw}`"))
+                .into());
             }
+            *seen = Some((kw, span));
         }
         let h1 = self.take_float(c, "the prism's first height")?;
         c.comma();
@@ -418,6 +434,19 @@ impl Evaluator<'_> {
             points.push(match &v {
                 Value::Float(f) => glam::DVec2::splat(*f),
                 Value::Vector(x) if x.len == 2 => glam::DVec2::new(x.c[0], x.c[1]),
+                Value::Vector(x) => {
+                    return Err(Diagnostic::error(
+                        codes::TYPE_MISMATCH,
+                        s,
+                        format!(
+                            "a prism point is 2-D `<u, v>`, found a vector of {} components",
+                            x.len
+                        ),
+                    )
+                    .with_label("not 2-D")
+                    .with_help("write `<x, z>`: the outline lies in the x-z plane and y is swept")
+                    .into())
+                }
                 other => return Err(self.mismatch("a 2-D point `<u, v>`", other, s)),
             });
         }
@@ -453,18 +482,24 @@ impl Evaluator<'_> {
                 } else {
                     Diagnostic::warning
                 };
-                let msg = format!(
-                    "points {} to {} of this `{kw}` prism do not close a sub-shape",
-                    i + 1,
-                    points.len()
-                );
+                let msg = if i + 1 == points.len() {
+                    format!("point {} of this `{kw}` prism closes no sub-shape", i + 1)
+                } else {
+                    format!(
+                        "points {} to {} of this `{kw}` prism close no sub-shape",
+                        i + 1,
+                        points.len()
+                    )
+                };
                 let diag = d(codes::INVALID_SIZE, last, msg)
-                    .with_label("the outline is still open here")
-                    .with_help(spline.closing_rule());
+                    .with_label("the outline is still open here");
                 if matches!(tail, Tail::Unclosed(_)) {
-                    return Err(diag.into());
+                    return Err(diag.with_help(spline.closing_rule()).into());
                 }
-                self.warn(diag.with_help("these points are ignored"));
+                self.warn(diag.with_help(format!(
+                    "rts ignores them, as POV-Ray does; {}",
+                    spline.closing_rule()
+                )));
             }
             Tail::Ignored(_) | Tail::Unclosed(_) => {}
         }
