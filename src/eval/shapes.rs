@@ -363,8 +363,9 @@ impl Evaluator<'_> {
         use crate::build::shapes::prism::{outline, Spline, Tail};
         let mut spline = Spline::Linear;
         let mut conic = false;
-        let (mut spline_kw, mut sweep_kw): (Option<(&str, Span)>, Option<(&str, Span)>) =
-            (None, None);
+        // The spline and sweep keywords seen so far, with where they were written.
+        type Seen = Option<(&'static str, Span)>;
+        let (mut spline_kw, mut sweep_kw): (Seen, Seen) = (None, None);
         while let Some(Tok::Kw(kw, span)) = c.peek() {
             let (kw, span) = (*kw, *span);
             c.next();
@@ -410,7 +411,7 @@ impl Evaluator<'_> {
             .with_help(spline.closing_rule())
             .into());
         }
-        if spline == Spline::Bezier && n as usize % 4 != 0 {
+        if spline == Spline::Bezier && !(n as usize).is_multiple_of(4) {
             return Err(Diagnostic::error(
                 codes::INVALID_SIZE,
                 count_span,

@@ -584,9 +584,9 @@ fn closest(c: &Curve, q: DVec2) -> f64 {
     best.1
 }
 
-/// Real roots in `[0, 1]` (a hair of slack, clamped) of `k[0] + k[1] s + k[2] s²
-/// + k[3] s³`; returns how many. Leading coefficients negligible on `[0, 1]`
-/// (below 1e-12 of the largest) are dropped.
+/// Real roots in `[0, 1]` (a hair of slack, clamped) of the cubic
+/// `k[0] + k[1] s + k[2] s² + k[3] s³`; returns how many. Leading coefficients
+/// negligible on `[0, 1]` (below 1e-12 of the largest) are dropped.
 fn roots01(k: [f64; 4], out: &mut [f64; 3]) -> usize {
     let scale = k.iter().fold(0.0f64, |m, c| m.max(c.abs()));
     if scale == 0.0 || !scale.is_finite() {
@@ -632,7 +632,8 @@ fn roots01(k: [f64; 4], out: &mut [f64; 3]) -> usize {
                 break;
             }
             let next = s - v / dv;
-            if !(value(next).abs() < v.abs()) {
+            // Stop unless strictly better (a NaN is never better).
+            if value(next).abs().partial_cmp(&v.abs()) != Some(std::cmp::Ordering::Less) {
                 break;
             }
             s = next;
