@@ -161,14 +161,8 @@ impl Evaluator<'_> {
                 self.animation_block(&mut c)?;
                 return Ok(None);
             }
-            "sky_sphere" => {
-                self.sky_sphere(&mut c)?;
-                return Ok(None);
-            }
-            "fog" => {
-                self.fog(&mut c)?;
-                return Ok(None);
-            }
+            "sky_sphere" => Value::SkySphere(std::sync::Arc::new(self.sky_sphere(&mut c)?)),
+            "fog" => Value::Fog(std::sync::Arc::new(self.fog(&mut c)?)),
             "path_tracing" => {
                 self.path_tracing(&mut c)?;
                 return Ok(None);

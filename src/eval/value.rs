@@ -142,6 +142,10 @@ pub enum Value {
     Camera(Arc<CameraSpec>),
     /// A light source.
     Light(Arc<Light>),
+    /// A `sky_sphere { … }`.
+    SkySphere(Arc<crate::scene::SkySphere>),
+    /// A `fog { … }`.
+    Fog(Arc<crate::scene::Fog>),
     /// A transform.
     Transform(Arc<Transform>),
     /// `reflection { … }` (only meaningful inside a finish).
@@ -183,6 +187,8 @@ impl Value {
             Value::Finish(_) => "a finish",
             Value::Camera(_) => "a camera",
             Value::Light(_) => "a light source",
+            Value::SkySphere(_) => "a sky_sphere",
+            Value::Fog(_) => "a fog",
             Value::Transform(_) => "a transform",
             Value::Reflection(_) => "a reflection block",
             Value::Normal(_) => "a normal",

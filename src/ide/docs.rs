@@ -620,7 +620,11 @@ pub const DOCS: &[Doc] = &[
     kw("bumps", "bumps", "Noise bumps (mostly for normals)."),
     kw("dents", "dents", "Dents (mostly for normals)."),
     kw("bump_size", "bump_size S", "The depth of a normal pattern."),
-    kw("turbulence", "turbulence T", "Stirs a pattern with noise."),
+    kw(
+        "turbulence",
+        "turbulence T",
+        "Stirs a pattern with noise; in a fog, varies its thickness.",
+    ),
     kw(
         "octaves",
         "octaves N",
@@ -1003,6 +1007,11 @@ pub const DOCS: &[Doc] = &[
         "fog_alt",
         "fog_alt A",
         "Ground fog: how fast it thins with height.",
+    ),
+    kw(
+        "turb_depth",
+        "turb_depth D",
+        "Fog turbulence: where along the ray it is taken (0 camera, 1 surface; default 0.5).",
     ),
     later("radiosity", "radiosity { … }", "Indirect diffuse lighting."),
     later("photons", "photons { … }", "Photon mapping for caustics."),
