@@ -129,7 +129,8 @@ pub struct Hit {
     /// For a CSG primitive, the index of the leaf hit; else 0.
     pub leaf: u32,
     /// Which part of the shape: the triangle of a mesh, the face of a polyhedron,
-    /// side (0) or end cap (1 base, 2 cap) of a cylinder or cone; else 0.
+    /// side (0) or end cap (1 base, 2 cap) of a cylinder or cone, bottom (0) or top
+    /// (1) cap or wall segment (2 + index) of a prism; else 0.
     pub sub: u32,
 }
 
