@@ -426,3 +426,168 @@ fn outlines_follow_povray_counting_rules() {
     let (c, t) = outline(Spline::Bezier, &open);
     assert_eq!((c.len(), t), (0, Tail::Ignored(0)));
 }
+
+#[test]
+fn crossings_alternate_in_and_out() {
+    // Along any ray, the solid is entered and left in turn: between two
+    // consecutive crossings the inside test is constant and flips at each one.
+    let heart = [
+        v(0.0, -1.2),
+        v(0.6, -0.6),
+        v(1.3, -0.1),
+        v(1.2, 0.5),
+        v(1.2, 0.5),
+        v(1.1, 1.1),
+        v(0.3, 1.2),
+        v(0.0, 0.6),
+        v(0.0, 0.6),
+        v(-0.3, 1.2),
+        v(-1.1, 1.1),
+        v(-1.2, 0.5),
+        v(-1.2, 0.5),
+        v(-1.3, -0.1),
+        v(-0.6, -0.6),
+        v(0.0, -1.2),
+    ];
+    let shapes = [
+        prism(Spline::Bezier, &bezier_circle(), 0.3, 1.0, true),
+        prism(Spline::Bezier, &heart, 0.3, 1.0, true),
+        prism(Spline::Bezier, &heart, -0.5, 1.0, false),
+        prism(
+            Spline::Cubic,
+            &spline_circle(5, Spline::Cubic),
+            0.2,
+            1.5,
+            true,
+        ),
+        prism(
+            Spline::Quadratic,
+            &spline_circle(6, Spline::Quadratic),
+            0.0,
+            1.5,
+            false,
+        ),
+    ];
+    let mut u = rng(11);
+    let mut bad = Vec::new();
+    for (k, p) in shapes.iter().enumerate() {
+        for _ in 0..20000 {
+            let ray = random_ray(&mut u);
+            let mut ts = Vec::new();
+            p.hits(&ray, 0.0, f64::INFINITY, &mut |t, _| ts.push(t));
+            ts.sort_by(f64::total_cmp);
+            ts.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+            let mut inside = p.inside(ray.origin);
+            let mut prev = 0.0;
+            for &t in ts.iter().chain(&[f64::INFINITY]) {
+                let mid = if t.is_finite() {
+                    0.5 * (prev + t)
+                } else {
+                    prev + 100.0
+                };
+                if (t - prev).abs() > 1e-6 && p.inside(ray.at(mid)) != inside {
+                    bad.push((k, ray, ts.clone()));
+                    break;
+                }
+                inside = !inside;
+                prev = t;
+            }
+        }
+    }
+    assert!(
+        bad.len() < 3,
+        "{} rays: {:?}",
+        bad.len(),
+        &bad[..bad.len().min(3)]
+    );
+}
+
+#[test]
+fn rays_leaving_the_surface_do_not_hit_it_again_at_once() {
+    let shapes = [
+        prism(Spline::Bezier, &bezier_circle(), 0.3, 1.0, true),
+        prism(Spline::Bezier, &bezier_circle(), 0.3, 1.0, false),
+        prism(
+            Spline::Cubic,
+            &spline_circle(5, Spline::Cubic),
+            0.2,
+            1.5,
+            true,
+        ),
+        prism(Spline::Linear, &square(1.0), 0.2, 1.5, true),
+    ];
+    let mut u = rng(12);
+    for (k, p) in shapes.iter().enumerate() {
+        let mut self_hits = 0;
+        let mut n = 0;
+        for _ in 0..20000 {
+            let ray = random_ray(&mut u);
+            let Some((t, sub)) = p.nearest(&ray, 0.0, f64::INFINITY) else {
+                continue;
+            };
+            n += 1;
+            let hit = ray.at(t);
+            let normal = p.normal(hit, sub).normalize();
+            // Straight on (into the solid), and back out.
+            for dir in [ray.dir, -ray.dir] {
+                let (r2, eps) = Ray::secondary(hit, normal, dir);
+                if let Some((t2, _)) = p.nearest(&r2, eps, f64::INFINITY) {
+                    if t2 < 1e-6 {
+                        self_hits += 1;
+                    }
+                }
+            }
+        }
+        assert!(self_hits == 0, "shape {k}: {self_hits} of {n}");
+    }
+}
+
+#[test]
+fn rays_from_the_surface_into_the_solid_find_the_way_out() {
+    let shapes = [
+        prism(Spline::Bezier, &bezier_circle(), 0.3, 1.0, true),
+        prism(Spline::Bezier, &bezier_circle(), 0.3, 1.0, false),
+        prism(
+            Spline::Cubic,
+            &spline_circle(5, Spline::Cubic),
+            0.2,
+            1.5,
+            true,
+        ),
+        prism(Spline::Linear, &square(1.0), 0.2, 1.5, true),
+    ];
+    let mut u = rng(13);
+    for (k, p) in shapes.iter().enumerate() {
+        let (mut lost, mut n) = (0, 0);
+        for _ in 0..20000 {
+            let ray = random_ray(&mut u);
+            let Some((t, sub)) = p.nearest(&ray, 0.0, f64::INFINITY) else {
+                continue;
+            };
+            let hit = ray.at(t);
+            let normal = p.normal(hit, sub).normalize();
+            // A random direction into the solid.
+            let d = loop {
+                let d = DVec3::new(u() - 0.5, u() - 0.5, u() - 0.5).normalize();
+                if d.dot(normal) < -0.05 {
+                    break d;
+                }
+            };
+            let (r2, eps) = Ray::secondary(hit, normal, d);
+            if !p.inside(r2.at(1e-7)) {
+                continue; // a corner or rim: the solid is not on that side
+            }
+            n += 1;
+            match p.nearest(&r2, eps, f64::INFINITY) {
+                Some((t2, s2)) => {
+                    let out = p.normal(r2.at(t2), s2);
+                    if out.dot(d) <= 0.0 {
+                        lost += 1;
+                    }
+                }
+                None => lost += 1,
+            }
+        }
+        assert!(lost == 0, "shape {k}: {lost} of {n} rays found no exit");
+    }
+}
