@@ -58,6 +58,7 @@ pub(crate) const BLOCKS: &[&str] = &[
     "background",
     "sky_sphere",
     "fog",
+    "material",
     "looks_like",
     "spline",
     "keyframes",
@@ -77,7 +78,6 @@ const LATER_BLOCKS: &[&str] = &[
     "text",
     "sphere_sweep",
     "bicubic_patch",
-    "material",
     "irid",
     "warp",
     "normal_map",
@@ -163,6 +163,7 @@ impl Evaluator<'_> {
             }
             "sky_sphere" => Value::SkySphere(std::sync::Arc::new(self.sky_sphere(&mut c)?)),
             "fog" => Value::Fog(std::sync::Arc::new(self.fog(&mut c)?)),
+            "material" => Value::Material(std::sync::Arc::new(self.material(&mut c)?)),
             "path_tracing" => {
                 self.path_tracing(&mut c)?;
                 return Ok(None);

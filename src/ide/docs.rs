@@ -507,10 +507,10 @@ pub const DOCS: &[Doc] = &[
         "interior { ior … fade_distance … }",
         "What is inside a transparent object.",
     ),
-    later(
+    kw(
         "material",
-        "material { texture { … } interior { … } }",
-        "A texture and interior together.",
+        "material { [M] texture { … } interior { … } }",
+        "A texture and interior declared and applied together.",
     ),
     kw(
         "uv_mapping",
