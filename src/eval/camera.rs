@@ -315,7 +315,11 @@ impl Evaluator<'_> {
             }
             let r = r.normalize();
             let u = d.cross(r);
-            let sign = if handed < 0.0 { -1.0 } else { 1.0 };
+            // POV-Ray keeps the usual orientation only when `up × direction`
+            // points along `right`; when it is zero (`up` along `direction`, as
+            // with `up z` and the default `direction z`) the picture is mirrored
+            // (measured: POV-Ray's objects/prism3 scenes).
+            let sign = if handed > 0.0 { 1.0 } else { -1.0 };
             right = r * right.length() * sign;
             up = u * up.length();
             dir = d * dir.length();
