@@ -1,6 +1,6 @@
 //! Dispatch from a block's keyword to the code that evaluates it.
 
-use super::cursor::{Cursor, Sink};
+use super::cursor::{Cursor, Sink, Tok};
 use super::value::Value;
 use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
@@ -128,6 +128,11 @@ impl Evaluator<'_> {
         self.expand(&b.items, &mut toks);
         self.coefficient_lists = outer;
         let mut c = Cursor::new(toks.toks, kw, b.span);
+        if kw == "object" && matches!(c.peek(), Some(Tok::Val(Value::Light(_), _))) {
+            return Ok(Some(Value::Light(std::sync::Arc::new(
+                self.light_object(&mut c)?,
+            ))));
+        }
         Ok(Some(match kw {
             "sphere" | "plane" | "box" | "triangle" | "union" | "object" | "cylinder" | "cone"
             | "torus" | "quadric" | "poly" | "cubic" | "quartic" | "disc" | "height_field"

@@ -288,6 +288,39 @@ impl Evaluator<'_> {
         Ok(light)
     }
 
+    /// `object { LIGHT_IDENTIFIER transforms }`: a declared light placed again, moved
+    /// by the transforms (POV-Ray lights are objects). `c` starts at the light.
+    pub(crate) fn light_object(&mut self, c: &mut Cursor) -> R<Light> {
+        let Some(Tok::Val(Value::Light(l), _)) = c.next() else {
+            unreachable!("called when the object block starts with a light");
+        };
+        let mut light = (*l).clone();
+        let mut transform = Transform::IDENTITY;
+        while let Some(tok) = c.next() {
+            let r: R<()> = match tok {
+                Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => {
+                    self.transform_kw(kw, span, c).map(|t| {
+                        transform_light(&mut light, &t);
+                        transform = transform.then(&t);
+                    })
+                }
+                Tok::Block(_, Value::Transform(t), _) => {
+                    transform_light(&mut light, &t);
+                    transform = transform.then(&t);
+                    Ok(())
+                }
+                other => Err(self.unexpected(c, &other, TRANSFORMS)),
+            };
+            if let Err(f) = r {
+                self.report(f);
+            }
+        }
+        if let Some(obj) = &mut light.looks_like {
+            super::objects::apply_transform(Arc::make_mut(obj), &transform);
+        }
+        Ok(light)
+    }
+
     /// `area_light AXIS1, AXIS2, N1, N2` after the keyword.
     fn area_light(&mut self, c: &mut Cursor, span: Span) -> R<AreaLight> {
         let axis1 = self.take_vec3(c, "the first axis of the area light")?;
