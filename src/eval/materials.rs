@@ -96,6 +96,8 @@ struct TexturePatternSpec {
     map: Option<Arc<Vec<(f64, Arc<Texture>)>>>,
     list: Vec<Arc<Texture>>,
     transform: Transform,
+    /// Something in the block failed and was reported.
+    failed: bool,
 }
 
 /// How many textures list pattern `kw` chooses between.
@@ -123,6 +125,19 @@ fn own_item_of_patterned(what: &str, span: Span) -> Fail {
 fn extra_texture(p: &TexturePatternSpec, span: Span) -> Fail {
     let n = list_len(p.keyword);
     let count = if n == 3 { "three" } else { "two" };
+    if p.list.len() < n {
+        return Diagnostic::error(
+            codes::UNEXPECTED_ITEM,
+            span,
+            format!("the textures of `{}` come right after it", p.keyword),
+        )
+        .with_secondary(p.span, "this pattern")
+        .with_help(format!(
+            "move the {count} `texture {{ … }}` blocks just after `{}`, before modifiers and transforms",
+            p.keyword
+        ))
+        .into();
+    }
     Diagnostic::error(
         codes::UNEXPECTED_ITEM,
         span,
@@ -202,18 +217,19 @@ impl Evaluator<'_> {
     /// transforms }` (list patterns) or `texture { PATTERN texture_map { … }
     /// modifiers transforms }`.
     pub(crate) fn texture(&mut self, c: &mut Cursor) -> R<Texture> {
-        let mut tex = match c.peek() {
+        let (mut tex, declared) = match c.peek() {
             Some(Tok::Val(Value::Texture(_), _)) => match c.next() {
-                Some(Tok::Val(Value::Texture(t), _)) => (*t).clone(),
+                Some(Tok::Val(Value::Texture(t), _)) => ((*t).clone(), true),
                 _ => unreachable!(),
             },
             Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
-            _ => (*self.default_texture).clone(),
+            _ => ((*self.default_texture).clone(), false),
         };
         // A declared patterned texture takes transforms only.
         let declared_patterned = tex.patterned.is_some();
-        // Whether a pigment, normal or finish was written in this block.
-        let mut plain_items = false;
+        // Whether the texture has items of its own: a declared texture it starts
+        // from, or a pigment, normal or finish written in this block.
+        let mut plain_items = declared;
         // The pattern written in this block, with its textures and transforms.
         let mut pat: Option<TexturePatternSpec> = None;
         while let Some(tok) = c.next() {
@@ -249,7 +265,7 @@ impl Evaluator<'_> {
                     Ok(())
                 }
                 Tok::Kw(kw, span) if PATTERNS.contains(&kw) => {
-                    self.texture_pattern(kw, span, c, &mut pat, plain_items || declared_patterned)
+                    self.texture_pattern(kw, span, c, &mut pat, plain_items)
                 }
                 Tok::Kw(kw, span) if MODIFIERS.contains(&kw) && pat.is_some() => {
                     let spec = &mut pat.as_mut().expect("checked").spec;
@@ -275,7 +291,14 @@ impl Evaluator<'_> {
                     }
                     Ok(())
                 }
-                Tok::Block(_, Value::Poison, _) | Tok::Val(Value::Poison, _) => Err(Fail::silent()),
+                Tok::Block(_, Value::Poison, _) | Tok::Val(Value::Poison, _) => {
+                    // Reported already (a texture_map with a bad entry, …): the
+                    // pattern's own checks would only repeat it.
+                    if let Some(p) = &mut pat {
+                        p.failed = true;
+                    }
+                    Err(Fail::silent())
+                }
                 Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_PATTERNS.contains(&kw) => {
                     Err(Diagnostic::error(
                         codes::UNSUPPORTED,
@@ -307,17 +330,18 @@ impl Evaluator<'_> {
         pat: &mut Option<TexturePatternSpec>,
         has_own_items: bool,
     ) -> R<()> {
-        if pat.is_some() {
-            return Err(Diagnostic::error(
-                codes::DUPLICATE_PARAMETER,
-                span,
-                "a texture has only one pattern",
+        let conflict: Option<Fail> = if pat.is_some() {
+            Some(
+                Diagnostic::error(
+                    codes::DUPLICATE_PARAMETER,
+                    span,
+                    "a texture has only one pattern",
+                )
+                .with_help("remove one of the patterns")
+                .into(),
             )
-            .with_help("remove one of the patterns")
-            .into());
-        }
-        if has_own_items {
-            return Err(Diagnostic::error(
+        } else if has_own_items {
+            Some(Diagnostic::error(
                 codes::UNEXPECTED_ITEM,
                 span,
                 format!("`{kw}` would make this a patterned texture, but it already has its own pigment, normal or finish"),
@@ -326,11 +350,13 @@ impl Evaluator<'_> {
             .with_help(format!(
                 "write a separate `texture {{ {kw} … }}`, and give each texture the pattern chooses its own pigment, normal and finish"
             ))
-            .into());
-        }
-        let mut spec = self.new_spec();
-        // Whatever follows is read even if the pattern fails, so its textures are
+            .into())
+        } else {
+            None
+        };
+        // The pattern and its textures are read even after a conflict, so they are
         // not reported again as out of place.
+        let mut spec = self.new_spec();
         let r = self.pattern_kw(kw, c, &mut spec, false);
         let mut p = TexturePatternSpec {
             keyword: kw,
@@ -339,10 +365,11 @@ impl Evaluator<'_> {
             map: None,
             list: Vec::new(),
             transform: Transform::IDENTITY,
+            failed: conflict.is_some() || r.is_err(),
         };
-        let kind = p.spec.kind;
-        if kind.is_some_and(|k| k.is_list()) {
+        if p.spec.kind.is_some_and(|k| k.is_list()) {
             let max = list_len(kw);
+            let mut told = false;
             loop {
                 match c.peek() {
                     Some(Tok::Block("texture", Value::Texture(_), _)) if p.list.len() < max => {
@@ -353,15 +380,20 @@ impl Evaluator<'_> {
                     Some(Tok::Val(Value::Texture(_), s)) => {
                         let s = *s;
                         c.next();
-                        self.report(
-                            Diagnostic::error(
-                                codes::UNEXPECTED_ITEM,
-                                s,
-                                format!("the textures of `{kw}` are written as `texture {{ … }}` blocks"),
-                            )
-                            .with_help("wrap the name in a block: `texture { Name }`")
-                            .into(),
-                        );
+                        p.failed = true;
+                        if !std::mem::replace(&mut told, true) {
+                            self.report(
+                                Diagnostic::error(
+                                    codes::UNEXPECTED_ITEM,
+                                    s,
+                                    format!(
+                                        "the textures of `{kw}` are written as `texture {{ … }}` blocks"
+                                    ),
+                                )
+                                .with_help("wrap each name in a block: `texture { Name }`")
+                                .into(),
+                            );
+                        }
                     }
                     Some(Tok::Comma(_)) => {
                         c.next();
@@ -371,7 +403,10 @@ impl Evaluator<'_> {
             }
         }
         *pat = Some(p);
-        r
+        match conflict {
+            Some(f) => Err(f),
+            None => r,
+        }
     }
 
     /// `texture_map { … }` in a texture.
@@ -430,7 +465,7 @@ impl Evaluator<'_> {
 
     /// The patterned texture `p` describes, once its block is read.
     fn finish_patterned(&mut self, mut p: TexturePatternSpec, c: &Cursor) -> R<Texture> {
-        let Some(kind) = p.spec.kind else {
+        let Some(kind) = p.spec.kind.filter(|_| !p.failed) else {
             return Err(Fail::silent());
         };
         let entries = if kind.is_list() {
