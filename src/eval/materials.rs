@@ -147,7 +147,10 @@ fn extra_texture(p: &TexturePatternSpec, span: Span) -> Fail {
         ),
     )
     .with_secondary(p.span, "this pattern")
-    .with_help(format!("remove this texture (`{}` takes {n})", p.keyword))
+    .with_help(format!(
+        "remove this texture (`{}` takes {count})",
+        p.keyword
+    ))
     .into()
 }
 
@@ -171,7 +174,7 @@ pub(crate) fn layer_texture(
             "a texture cannot be layered over a patterned texture"
         };
         return Err(Diagnostic::error(codes::PATTERNED_LAYER, span, msg)
-            .with_label("second texture of the same object")
+            .with_label("layered over the texture before it")
             .with_help(
                 "give the object one texture, or put the layers inside the textures the pattern chooses (a declared layered texture can be a texture_map entry)",
             )
@@ -315,7 +318,7 @@ impl Evaluator<'_> {
             }
         }
         match pat {
-            Some(p) => self.finish_patterned(p, c),
+            Some(p) => self.finish_patterned(p),
             None => Ok(tex),
         }
     }
@@ -433,18 +436,22 @@ impl Evaluator<'_> {
             .into());
         };
         if p.spec.kind.is_some_and(|k| k.is_list()) {
-            let n = list_len(p.keyword);
+            let (count, blocks) = if list_len(p.keyword) == 3 {
+                ("three", "texture { … } texture { … } texture { … }")
+            } else {
+                ("two", "texture { … } texture { … }")
+            };
             return Err(Diagnostic::error(
                 codes::UNEXPECTED_ITEM,
                 span,
                 format!(
-                    "`{}` chooses between {n} textures and takes no `texture_map`",
+                    "`{}` chooses between {count} textures and takes no `texture_map`",
                     p.keyword
                 ),
             )
             .with_secondary(p.span, "this pattern")
             .with_help(format!(
-                "write its {n} textures after it: `{} texture {{ … }} texture {{ … }}`",
+                "write its {count} textures right after it: `{} {blocks}`",
                 p.keyword
             ))
             .into());
@@ -464,7 +471,7 @@ impl Evaluator<'_> {
     }
 
     /// The patterned texture `p` describes, once its block is read.
-    fn finish_patterned(&mut self, mut p: TexturePatternSpec, c: &Cursor) -> R<Texture> {
+    fn finish_patterned(&mut self, mut p: TexturePatternSpec) -> R<Texture> {
         let Some(kind) = p.spec.kind.filter(|_| !p.failed) else {
             return Err(Fail::silent());
         };
@@ -485,7 +492,6 @@ impl Evaluator<'_> {
                         format!("a texture with the `{}` pattern needs a `texture_map {{ … }}`", p.keyword),
                     )
                     .with_label("pattern without textures")
-                    .with_secondary(c.last, "the map would go here")
                     .with_help(format!(
                         "add `texture_map {{ [0 Texture_A] [1 Texture_B] }}`, or use `pigment {{ {} … }}` for a pattern of colours",
                         p.keyword
