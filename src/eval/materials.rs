@@ -9,7 +9,7 @@ use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
 use crate::scene::{
     compose, Colour, Finish, ImageMap, Interior, Mapped, Normal, Pattern, PatternKind, PatternMap,
-    PatternedTexture, Pigment, Reflection, Texture, TextureEntries, Transform,
+    PatternedTexture, Pigment, Reflection, Texture, TextureEntries, TextureMapEntries, Transform,
 };
 use crate::span::Span;
 use glam::DVec3;
@@ -93,7 +93,7 @@ struct TexturePatternSpec {
     keyword: &'static str,
     span: Span,
     spec: PatternSpec,
-    map: Option<Arc<Vec<(f64, Arc<Texture>)>>>,
+    map: Option<TextureMapEntries>,
     list: Vec<Arc<Texture>>,
     transform: Transform,
     /// Something in the block failed and was reported.
@@ -415,7 +415,7 @@ impl Evaluator<'_> {
     /// `texture_map { … }` in a texture.
     fn set_texture_map(
         &mut self,
-        m: Arc<Vec<(f64, Arc<Texture>)>>,
+        m: TextureMapEntries,
         span: Span,
         pat: &mut Option<TexturePatternSpec>,
         declared_patterned: bool,

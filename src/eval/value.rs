@@ -155,7 +155,7 @@ pub enum Value {
     /// A pigment map.
     PigmentMap(Arc<Vec<(f64, Pigment)>>),
     /// A texture map (entries in the order written).
-    TextureMap(Arc<Vec<(f64, Arc<Texture>)>>),
+    TextureMap(crate::scene::TextureMapEntries),
     /// A macro.
     Macro(Rc<MacroDef>),
     /// A `spline { }`, called as `S(t)`.

@@ -66,12 +66,15 @@ pub struct PatternedTexture {
     pub entries: TextureEntries,
 }
 
+/// The entries of a `texture_map { [v TEXTURE] … }`, in the order written.
+pub type TextureMapEntries = Arc<Vec<(f64, Arc<Texture>)>>;
+
 /// What a patterned texture's pattern chooses from.
 #[derive(Clone, Debug, PartialEq)]
 pub enum TextureEntries {
     /// `texture_map { [v TEXTURE] … }`, in the order written (POV-Ray does not
     /// sort texture maps; see `render::pigment::map_lookup`).
-    Map(Arc<Vec<(f64, Arc<Texture>)>>),
+    Map(TextureMapEntries),
     /// The textures of a list pattern (`checker`: 2, `hexagon`: 3, `brick`: 2).
     List(Vec<Arc<Texture>>),
 }
