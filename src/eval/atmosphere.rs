@@ -5,7 +5,7 @@ use super::objects::TRANSFORMS;
 use super::value::Value;
 use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
-use crate::scene::{Fog, FogKind, Object, SkySphere, Transform};
+use crate::scene::{Fog, FogKind, FogTurbulence, Object, SkySphere, Transform};
 use glam::DVec3;
 
 pub(crate) const SKY_ITEMS: &[&str] = &[
@@ -23,16 +23,26 @@ pub(crate) const FOG_ITEMS: &[&str] = &[
     "fog_offset",
     "fog_alt",
     "up",
+    "turbulence",
+    "turb_depth",
+    "octaves",
+    "omega",
+    "lambda",
 ];
-const LATER_FOG: &[&str] = &["turbulence", "turb_depth", "omega", "lambda", "octaves"];
 
 impl Evaluator<'_> {
-    /// `sky_sphere { pigment { … } … transforms }`: sets the scene's sky sphere.
-    pub(crate) fn sky_sphere(&mut self, c: &mut Cursor) -> R<()> {
+    /// `sky_sphere { [SKY_SPHERE_IDENTIFIER] pigment { … } … transforms }`: a sky
+    /// sphere (placed in the scene at top level, or declared).
+    pub(crate) fn sky_sphere(&mut self, c: &mut Cursor) -> R<SkySphere> {
         let mut sky = SkySphere {
             pigments: Vec::new(),
             transform: None,
         };
+        if let Some(Tok::Val(Value::SkySphere(_), _)) = c.peek() {
+            if let Some(Tok::Val(Value::SkySphere(s), _)) = c.next() {
+                sky = (*s).clone();
+            }
+        }
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
                 Tok::Block(_, Value::Pigment(p), _) => {
@@ -63,17 +73,41 @@ impl Evaluator<'_> {
             .with_help("write `sky_sphere { pigment { gradient y color_map { … } } }`")
             .into());
         }
-        self.scene.atmosphere.sky_sphere = Some(sky);
-        Ok(())
+        Ok(sky)
     }
 
-    /// `fog { [fog_type 1|2] distance D COLOUR [fog_offset O fog_alt A up V] }`: adds a
-    /// fog to the scene.
-    pub(crate) fn fog(&mut self, c: &mut Cursor) -> R<()> {
+    /// `fog { [fog_type 1|2] distance D COLOUR [fog_offset O fog_alt A up V]
+    /// [turbulence T turb_depth D octaves N omega W lambda L] }`, optionally starting
+    /// from a declared fog: a fog (added to the scene at top level, or declared).
+    pub(crate) fn fog(&mut self, c: &mut Cursor) -> R<Fog> {
         let mut ty = 1.0;
         let mut distance = None;
         let mut colour = None;
         let (mut offset, mut alt, mut up) = (0.0, 1.0, DVec3::Y);
+        let mut turb = FogTurbulence {
+            amount: DVec3::ZERO,
+            depth: 0.5,
+            octaves: 6,
+            omega: 0.5,
+            lambda: 2.0,
+        };
+        if let Some(Tok::Val(Value::Fog(_), _)) = c.peek() {
+            if let Some(Tok::Val(Value::Fog(f), _)) = c.next() {
+                distance = Some(f.distance);
+                colour = Some(f.colour);
+                if let FogKind::Ground {
+                    offset: o,
+                    alt: a,
+                    up: u,
+                } = f.kind
+                {
+                    (ty, offset, alt, up) = (2.0, o, a, u);
+                }
+                if let Some(t) = f.turbulence {
+                    turb = t;
+                }
+            }
+        }
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
                 Tok::Val(Value::Colour(_), _) => {
@@ -138,14 +172,43 @@ impl Evaluator<'_> {
                         Ok(())
                     }
                 }
-                Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_FOG.contains(&kw) => {
-                    Err(Diagnostic::error(
-                        codes::UNSUPPORTED,
-                        span,
-                        format!("fog `{kw}` is not implemented in rts yet"),
-                    )
-                    .with_help("remove it for an even fog")
-                    .into())
+                Tok::Kw("turbulence", span) => {
+                    c.once("turbulence", span)?;
+                    self.take_vec3(c, "the turbulence amount (a number or a vector)")
+                        .map(|v| turb.amount = v)
+                }
+                Tok::Kw("turb_depth", span) => {
+                    c.once("turb_depth", span)?;
+                    let (v, s) = c.value("where along the ray turbulence is taken (0 to 1)")?;
+                    let d = self.to_float(&v, s)?;
+                    if (0.0..=1.0).contains(&d) {
+                        turb.depth = d;
+                        Ok(())
+                    } else {
+                        Err(Diagnostic::error(
+                            codes::OUT_OF_RANGE,
+                            s,
+                            format!("`turb_depth` is between 0 and 1, found {d}"),
+                        )
+                        .with_help("0 takes the turbulence at the camera, 1 at the surface hit; the default is 0.5")
+                        .into())
+                    }
+                }
+                Tok::Kw("octaves", span) => {
+                    c.once("octaves", span)?;
+                    // As in patterns: POV-Ray keeps 1 to 10 octaves.
+                    self.take_float(c, "the number of octaves")
+                        .map(|n| turb.octaves = n.clamp(1.0, 10.0) as u32)
+                }
+                Tok::Kw(kw @ ("omega" | "lambda"), span) => {
+                    c.once(kw, span)?;
+                    self.take_float(c, kw).map(|v| {
+                        if kw == "omega" {
+                            turb.omega = v;
+                        } else {
+                            turb.lambda = v;
+                        }
+                    })
                 }
                 other => Err(self.unexpected(c, &other, FOG_ITEMS)),
             };
@@ -167,12 +230,12 @@ impl Evaluator<'_> {
         } else {
             FogKind::Constant
         };
-        self.scene.atmosphere.fogs.push(Fog {
+        Ok(Fog {
             kind,
             distance,
             colour: colour.unwrap_or(crate::scene::Colour::BLACK),
-        });
-        Ok(())
+            turbulence: (turb.amount != DVec3::ZERO).then_some(turb),
+        })
     }
 
     /// `looks_like { OBJECT }`: the object.

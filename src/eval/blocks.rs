@@ -58,6 +58,7 @@ pub(crate) const BLOCKS: &[&str] = &[
     "background",
     "sky_sphere",
     "fog",
+    "material",
     "looks_like",
     "spline",
     "keyframes",
@@ -78,7 +79,6 @@ const LATER_BLOCKS: &[&str] = &[
     "text",
     "sphere_sweep",
     "bicubic_patch",
-    "material",
     "irid",
     "warp",
     "normal_map",
@@ -162,14 +162,9 @@ impl Evaluator<'_> {
                 self.animation_block(&mut c)?;
                 return Ok(None);
             }
-            "sky_sphere" => {
-                self.sky_sphere(&mut c)?;
-                return Ok(None);
-            }
-            "fog" => {
-                self.fog(&mut c)?;
-                return Ok(None);
-            }
+            "sky_sphere" => Value::SkySphere(std::sync::Arc::new(self.sky_sphere(&mut c)?)),
+            "fog" => Value::Fog(std::sync::Arc::new(self.fog(&mut c)?)),
+            "material" => Value::Material(std::sync::Arc::new(self.material(&mut c)?)),
             "path_tracing" => {
                 self.path_tracing(&mut c)?;
                 return Ok(None);

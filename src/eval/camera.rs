@@ -16,6 +16,7 @@ pub(crate) const CAMERA_ITEMS: &[&str] = &[
     "ultra_wide_angle",
     "panoramic",
     "spherical",
+    "cylinder",
     "aperture",
     "focal_point",
     "blur_samples",
@@ -34,7 +35,7 @@ pub(crate) const CAMERA_ITEMS: &[&str] = &[
     "matrix",
     "transform",
 ];
-const LATER_CAMERA: &[&str] = &["cylinder", "omnimax", "mesh_camera", "normal"];
+const LATER_CAMERA: &[&str] = &["omnimax", "mesh_camera", "normal"];
 /// The projection keywords.
 const PROJECTIONS: &[&str] = &[
     "perspective",
@@ -72,6 +73,26 @@ impl Evaluator<'_> {
         };
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
+                Tok::Kw("cylinder", _) => {
+                    let (v, s) = c.value("the cylinder camera's type, 1 to 4")?;
+                    let t = self.to_float(&v, s)?;
+                    if [1.0, 2.0, 3.0, 4.0].contains(&t) {
+                        cam.projection = "cylinder";
+                        cam.cylinder = t as u8;
+                        Ok(())
+                    } else {
+                        Err(Diagnostic::error(
+                            codes::OUT_OF_RANGE,
+                            s,
+                            format!("a cylinder camera's type is 1, 2, 3 or 4, found {t}"),
+                        )
+                        .with_help(
+                            "1 vertical cylinder, 2 horizontal cylinder (both from one point); \
+                             3 and 4 the same with the viewpoint moving along the axis",
+                        )
+                        .into())
+                    }
+                }
                 Tok::Kw(kw, _) if PROJECTIONS.contains(&kw) => {
                     cam.projection = PROJECTIONS.iter().copied().find(|p| *p == kw).unwrap_or("perspective");
                     Ok(())
@@ -201,7 +222,7 @@ impl Evaluator<'_> {
                     span,
                     format!("`{kw}` cameras and options are not implemented in rts yet"),
                 )
-                .with_help("rts has perspective, orthographic, fisheye, ultra_wide_angle, panoramic and spherical cameras")
+                .with_help("rts has perspective, orthographic, fisheye, ultra_wide_angle, panoramic, cylinder and spherical cameras")
                 .into()),
                 other => Err(self.unexpected(c, &other, CAMERA_ITEMS)),
             };
@@ -323,6 +344,10 @@ impl Evaluator<'_> {
                 angle: spec.angle.unwrap_or(90.0),
             },
             "panoramic" => CameraKind::Panoramic,
+            "cylinder" => CameraKind::Cylinder {
+                kind: spec.cylinder,
+                angle: spec.angle.unwrap_or(90.0),
+            },
             "spherical" => {
                 let h = spec.angle.unwrap_or(360.0);
                 CameraKind::Spherical {

@@ -20,6 +20,7 @@ pub const STDLIB: &[(&str, &str)] = &[
     ("metals.inc", include_str!("../stdlib/metals.inc")),
     ("shapes.inc", include_str!("../stdlib/shapes.inc")),
     ("shapes2.inc", include_str!("../stdlib/shapes2.inc")),
+    ("skies.inc", include_str!("../stdlib/skies.inc")),
     ("stones.inc", include_str!("../stdlib/stones.inc")),
     ("textures.inc", include_str!("../stdlib/textures.inc")),
     ("transforms.inc", include_str!("../stdlib/transforms.inc")),

@@ -132,6 +132,15 @@ impl Evaluator<'_> {
                 self.scene.lights.push((*l).clone());
                 return;
             }
+            Tok::Block(_, Value::SkySphere(s), _) => {
+                // As in POV-Ray, a later sky_sphere replaces an earlier one.
+                self.scene.atmosphere.sky_sphere = Some((*s).clone());
+                return;
+            }
+            Tok::Block(_, Value::Fog(f), _) => {
+                self.scene.atmosphere.fogs.push(*f);
+                return;
+            }
             Tok::Block(_, Value::Camera(c), span) => {
                 if let Some(prev) = self.camera_seen {
                     self.warn(

@@ -18,6 +18,7 @@ mod include;
 mod items;
 mod keyframe;
 mod lights;
+mod material_block;
 mod materials;
 mod mesh;
 mod mesh_cache;

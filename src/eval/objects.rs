@@ -22,6 +22,7 @@ pub(crate) const OBJECT_MODIFIERS: &[&str] = &[
     "finish",
     "normal",
     "interior",
+    "material",
     "no_shadow",
     "no_image",
     "no_reflection",
@@ -226,6 +227,15 @@ impl Evaluator<'_> {
                 super::materials::check_not_patterned(obj.texture.as_ref(), kw, span)?;
             }
             Tok::Block(_, Value::Interior(i), _) => obj.interior = Some(i),
+            Tok::Block(_, Value::Material(m), _) => {
+                if let Some(t) = &m.texture {
+                    let top = attach(obj, (**t).clone());
+                    obj.texture = Some(super::materials::layer_texture(obj.texture.as_ref(), top));
+                }
+                if let Some(i) = &m.interior {
+                    obj.interior = Some(i.clone());
+                }
+            }
             Tok::Block(_, Value::Normal(n), _) => {
                 let mut tex = match obj.texture.as_deref() {
                     Some(t) => t.clone(),

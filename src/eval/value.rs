@@ -76,6 +76,8 @@ pub struct CameraSpec {
     pub projection: &'static str,
     /// Second value of `angle H, V` (spherical cameras).
     pub v_angle: Option<f64>,
+    /// The type of a `cylinder` camera (1 to 4; 0 for other projections).
+    pub cylinder: u8,
     /// `aperture` (0 = pinhole).
     pub aperture: f64,
     /// `focal_point`.
@@ -106,6 +108,7 @@ impl Default for CameraSpec {
             transform: None,
             projection: "perspective",
             v_angle: None,
+            cylinder: 0,
             aperture: 0.0,
             focal_point: DVec3::ZERO,
             blur_samples: 1,
@@ -142,6 +145,12 @@ pub enum Value {
     Camera(Arc<CameraSpec>),
     /// A light source.
     Light(Arc<Light>),
+    /// A `sky_sphere { … }`.
+    SkySphere(Arc<crate::scene::SkySphere>),
+    /// A `fog { … }`.
+    Fog(Arc<crate::scene::Fog>),
+    /// A `material { … }`.
+    Material(Arc<super::material_block::Material>),
     /// A transform.
     Transform(Arc<Transform>),
     /// `reflection { … }` (only meaningful inside a finish).
@@ -185,6 +194,9 @@ impl Value {
             Value::Finish(_) => "a finish",
             Value::Camera(_) => "a camera",
             Value::Light(_) => "a light source",
+            Value::SkySphere(_) => "a sky_sphere",
+            Value::Fog(_) => "a fog",
+            Value::Material(_) => "a material",
             Value::Transform(_) => "a transform",
             Value::Reflection(_) => "a reflection block",
             Value::Normal(_) => "a normal",

@@ -507,10 +507,10 @@ pub const DOCS: &[Doc] = &[
         "interior { ior … fade_distance … }",
         "What is inside a transparent object.",
     ),
-    later(
+    kw(
         "material",
-        "material { texture { … } interior { … } }",
-        "A texture and interior together.",
+        "material { [M] texture { … } interior { … } }",
+        "A texture and interior declared and applied together.",
     ),
     kw(
         "uv_mapping",
@@ -625,7 +625,11 @@ pub const DOCS: &[Doc] = &[
     kw("bumps", "bumps", "Noise bumps (mostly for normals)."),
     kw("dents", "dents", "Dents (mostly for normals)."),
     kw("bump_size", "bump_size S", "The depth of a normal pattern."),
-    kw("turbulence", "turbulence T", "Stirs a pattern with noise."),
+    kw(
+        "turbulence",
+        "turbulence T",
+        "Stirs a pattern with noise; in a fog, varies its thickness.",
+    ),
     kw(
         "octaves",
         "octaves N",
@@ -1008,6 +1012,11 @@ pub const DOCS: &[Doc] = &[
         "fog_alt",
         "fog_alt A",
         "Ground fog: how fast it thins with height.",
+    ),
+    kw(
+        "turb_depth",
+        "turb_depth D",
+        "Fog turbulence: where along the ray it is taken (0 camera, 1 surface; default 0.5).",
     ),
     later("radiosity", "radiosity { … }", "Indirect diffuse lighting."),
     later("photons", "photons { … }", "Photon mapping for caustics."),

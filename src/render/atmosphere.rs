@@ -2,8 +2,9 @@
 //! along the way, as POV-Ray 3.7 defines them.
 
 use super::pigment;
+use super::pigment::noise;
 use crate::build::{Ray, World};
-use crate::scene::{Atmosphere, Fog, FogKind};
+use crate::scene::{Atmosphere, Fog, FogKind, FogTurbulence};
 use glam::DVec3;
 
 /// Distance a ray that hits nothing is taken to travel through fog.
@@ -67,7 +68,35 @@ pub fn transmittance(fog: &Fog, origin: DVec3, dir: DVec3, dist: f64) -> f64 {
     if !depth.is_finite() {
         return 0.0;
     }
-    (-depth / fog.distance).exp()
+    let scale = fog
+        .turbulence
+        .map_or(1.0, |t| thickness(&t, origin + dir * (dist * t.depth)));
+    (-depth * scale / fog.distance).exp()
+}
+
+/// How a fog's `turbulence` scales the attenuation along a ray whose turbulence
+/// point (`turb_depth` of the way along it) is `p`. As the POV-Ray manual says,
+/// the fog's density does not change; only its distance-based attenuation is
+/// modified by a turbulence value at that point. rts's rule: the value is the
+/// scalar turbulence `T = Σ omegaⁱ |noise(q lambdaⁱ)|` at `q = p × amount` (per
+/// axis: a larger amount varies faster, a zero component not at all), and the
+/// attenuation is scaled by `1 - GAIN × turb_depth × T`, never below 0.
+///
+/// `GAIN` is fitted to POV-Ray 3.7 (its noise is its own, so only the statistics
+/// can agree): a black wall 10 units away in white fog of distance 10, 160×120,
+/// 16-bit linear, turbulence 0.8. Attenuation relative to the plain fog, mean and
+/// standard deviation over the picture, POV-Ray then rts: default 0.863 / 0.054
+/// and 0.860 / 0.062; `turb_depth 1` 0.73 and 0.72; `octaves 1` 0.946 / 0.041 and
+/// 0.927 / 0.053; `turb_depth 0` 1.033 and 1. POV-Ray's mean does not depend on
+/// the amount once it is above about 0.2, nor does rts's.
+fn thickness(t: &FogTurbulence, p: DVec3) -> f64 {
+    const GAIN: f64 = 1.3;
+    let q = p * t.amount;
+    if !q.is_finite() {
+        return 1.0;
+    }
+    let turb = noise::turbulence(q, t.octaves, t.omega, t.lambda);
+    (1.0 - GAIN * t.depth * turb).max(0.0)
 }
 
 /// A fog with transmittance `k` passes `pass` times the colour behind it and adds
@@ -113,6 +142,7 @@ mod tests {
             kind,
             distance: 10.0,
             colour: Colour::rgb(0.5, 0.6, 0.7),
+            turbulence: None,
         }
     }
 
@@ -170,5 +200,50 @@ mod tests {
         }
         let k = transmittance(&f, DVec3::ZERO, dir, 20.0);
         assert!((k - (-sum / 10.0).exp()).abs() < 1e-6);
+    }
+
+    #[test]
+    fn fog_turbulence_varies_the_attenuation_not_the_density() {
+        let turb = FogTurbulence {
+            amount: DVec3::splat(0.8),
+            depth: 0.5,
+            octaves: 6,
+            omega: 0.5,
+            lambda: 2.0,
+        };
+        let mut f = fog(FogKind::Constant);
+        f.turbulence = Some(turb);
+        let plain = fog(FogKind::Constant);
+        // Over many rays the attenuation is scaled by about 0.86 on average (the
+        // figure fitted to POV-Ray), varies from ray to ray, and is never more
+        // than the plain fog's.
+        let (mut sum, mut lo, mut hi) = (0.0, f64::MAX, 0.0f64);
+        let n = 2000;
+        for i in 0..n {
+            let a = i as f64 * 0.6180339887;
+            let dir = DVec3::new(a.sin() * 0.5, (a * 1.7).cos() * 0.4, 1.0).normalize();
+            let k = transmittance(&f, DVec3::ZERO, dir, 10.0);
+            let k0 = transmittance(&plain, DVec3::ZERO, dir, 10.0);
+            let scale = k.ln() / k0.ln();
+            assert!((0.0..=1.0 + 1e-12).contains(&scale), "{scale}");
+            sum += scale;
+            lo = lo.min(scale);
+            hi = hi.max(scale);
+        }
+        let mean = sum / n as f64;
+        assert!((mean - 0.86).abs() < 0.04, "mean {mean}");
+        assert!(hi - lo > 0.2, "range {lo}..{hi}");
+        // Taken at the camera (turb_depth 0) the fog is the plain one.
+        f.turbulence = Some(FogTurbulence { depth: 0.0, ..turb });
+        let d = DVec3::new(0.3, 0.1, 1.0).normalize();
+        let (k, k0) = (
+            transmittance(&f, DVec3::ZERO, d, 10.0),
+            transmittance(&plain, DVec3::ZERO, d, 10.0),
+        );
+        assert!((k - k0).abs() < 1e-15);
+        // A ray that misses everything stays fully fogged (no NaN from the
+        // far turbulence point).
+        f.turbulence = Some(turb);
+        assert_eq!(transmittance(&f, DVec3::ZERO, d, MISS_DISTANCE), 0.0);
     }
 }

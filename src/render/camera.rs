@@ -101,6 +101,22 @@ fn pinhole(camera: &Camera, sx: f64, sy: f64) -> Option<(DVec3, DVec3)> {
                 (loc, a.sin() * r + b.tan() * u + a.cos() * d)
             }
         }
+        CameraKind::Cylinder { kind, angle } => {
+            let (dn, rn, un, _) = units();
+            // Around the axis from one screen coordinate, along it from the other.
+            let (around, along, side, axis) = if kind % 2 == 1 {
+                (sx, sy, rn, u)
+            } else {
+                (sy, sx, un, r)
+            };
+            let (s, c) = (around * angle.to_radians()).sin_cos();
+            let flat = c * dn + s * side;
+            if kind <= 2 {
+                (loc, flat + along * axis)
+            } else {
+                (loc + along * axis, flat)
+            }
+        }
         CameraKind::Spherical { h_angle, v_angle } => {
             let (dn, rn, un, _) = units();
             let lon = sx * h_angle.to_radians();
@@ -157,6 +173,33 @@ mod tests {
         let top = ray(&c, 50.0, 0.0).unwrap();
         assert!((top.dir - DVec3::Y).length() < 1e-9);
         assert!(ray(&c, 0.0, 0.0).is_none());
+    }
+
+    #[test]
+    fn cylinder_cameras_wrap_one_axis_and_run_straight_along_the_other() {
+        let c = |kind| Camera {
+            right: DVec3::X * 2.0,
+            up: DVec3::Y * 3.0,
+            ..cam(CameraKind::Cylinder { kind, angle: 180.0 })
+        };
+        // Type 1: the right edge is 90° to the right; the top rises by |up| / 2.
+        let r = ray(&c(1), 100.0, 50.0).unwrap();
+        assert!((r.dir - DVec3::X).length() < 1e-9);
+        let r = ray(&c(1), 50.0, 0.0).unwrap();
+        assert!((r.dir - DVec3::new(0.0, 1.5, 1.0).normalize()).length() < 1e-9);
+        assert_eq!(r.origin, DVec3::ZERO);
+        // Type 2: the top edge is 90° up; the right edge moves sideways by |right| / 2.
+        let r = ray(&c(2), 50.0, 0.0).unwrap();
+        assert!((r.dir - DVec3::Y).length() < 1e-9);
+        let r = ray(&c(2), 100.0, 50.0).unwrap();
+        assert!((r.dir - DVec3::new(1.0, 0.0, 1.0).normalize()).length() < 1e-9);
+        // Types 3 and 4: the start moves along the axis, the rays stay flat.
+        let r = ray(&c(3), 50.0, 0.0).unwrap();
+        assert!((r.origin - DVec3::new(0.0, 1.5, 0.0)).length() < 1e-12);
+        assert!((r.dir - DVec3::Z).length() < 1e-12);
+        let r = ray(&c(4), 0.0, 0.0).unwrap();
+        assert!((r.origin - DVec3::new(-1.0, 0.0, 0.0)).length() < 1e-12);
+        assert!((r.dir - DVec3::Y).length() < 1e-9);
     }
 
     #[test]

@@ -22,7 +22,7 @@ pub struct SkySphere {
     pub transform: Option<Transform>,
 }
 
-/// `fog { fog_type distance COLOUR [fog_offset fog_alt up] }`.
+/// `fog { fog_type distance COLOUR [fog_offset fog_alt up] [turbulence …] }`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fog {
     /// Constant fog or ground fog.
@@ -31,6 +31,28 @@ pub struct Fog {
     pub distance: f64,
     /// The fog colour; `filter` tints and `transmit` lets through what is behind.
     pub colour: Colour,
+    /// `turbulence`: varies the fog's thickness from ray to ray; `None` when the
+    /// fog has none (or a zero amount).
+    pub turbulence: Option<FogTurbulence>,
+}
+
+/// `turbulence <AMOUNT> [turb_depth D] [octaves N] [omega W] [lambda L]` in a fog:
+/// the distance-based attenuation along each ray is scaled by a turbulence value
+/// taken at one point of the ray (see `render::atmosphere`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FogTurbulence {
+    /// `turbulence`: per axis, how much the turbulence varies along that axis
+    /// (the sampling point is scaled by it).
+    pub amount: DVec3,
+    /// `turb_depth` (default 0.5): where along the ray the turbulence is taken,
+    /// 0 at the ray's start, 1 at what it hits.
+    pub depth: f64,
+    /// `octaves` (default 6).
+    pub octaves: u32,
+    /// `omega` (default 0.5).
+    pub omega: f64,
+    /// `lambda` (default 2).
+    pub lambda: f64,
 }
 
 /// The fog types.

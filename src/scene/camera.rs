@@ -30,6 +30,20 @@ pub enum CameraKind {
     /// `sin(a) right + tan(b) up + cos(a) direction` (the vectors as they are, not
     /// normalised; measured against POV-Ray 3.7, which ignores `angle` for it).
     Panoramic,
+    /// `cylinder 1` to `4` (measured against POV-Ray 3.7). The angle around the
+    /// cylinder's axis is `θ = s · angle`, `s` the screen coordinate across the axis;
+    /// along the axis the screen coordinate `a` moves the ray by `a` times the
+    /// (unnormalised) axis vector. Types 1 and 3 have a vertical axis (`up`; θ
+    /// from `sx`, towards `right`), types 2 and 4 a horizontal one (`right`; θ from
+    /// `sy`, towards `up`). Types 1 and 2 start every ray at `location` and tilt
+    /// the direction `cos θ D + sin θ A + a·axis` (unit `D`, `A`); types 3 and 4
+    /// move the start along the axis instead and keep the direction flat.
+    Cylinder {
+        /// The type, 1 to 4.
+        kind: u8,
+        /// The angle around the axis the image spans, in degrees (default 90).
+        angle: f64,
+    },
     /// `spherical`: longitude and latitude mapped linearly onto the image.
     Spherical {
         /// Horizontal field of view in degrees (default 360).

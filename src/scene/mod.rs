@@ -15,7 +15,7 @@ mod path;
 mod transform;
 
 pub use animation::{Timeline, DEFAULT_FPS};
-pub use atmosphere::{Atmosphere, Fog, FogKind, SkySphere};
+pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, SkySphere};
 pub use camera::{Camera, CameraKind};
 pub use light::{AreaLight, Beam, Light, LightKind};
 pub use material::{

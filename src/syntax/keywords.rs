@@ -217,6 +217,7 @@ pub const KEYWORDS: &[&str] = &[
     "triangle",
     "triangle_wave",
     "ttf",
+    "turb_depth",
     "turbulence",
     "ultra_wide_angle",
     "union",
