@@ -227,10 +227,14 @@ impl Evaluator<'_> {
                 super::materials::check_not_patterned(obj.texture.as_ref(), kw, span)?;
             }
             Tok::Block(_, Value::Interior(i), _) => obj.interior = Some(i),
-            Tok::Block(_, Value::Material(m), _) => {
+            Tok::Block(_, Value::Material(m), span) => {
                 if let Some(t) = &m.texture {
                     let top = attach(obj, (**t).clone());
-                    obj.texture = Some(super::materials::layer_texture(obj.texture.as_ref(), top));
+                    obj.texture = Some(super::materials::layer_texture(
+                        obj.texture.as_ref(),
+                        top,
+                        span,
+                    )?);
                 }
                 if let Some(i) = &m.interior {
                     obj.interior = Some(i.clone());
