@@ -428,6 +428,14 @@ impl Builder {
                 None => empty(),
             },
             Shape::Polyhedron { planes } => PrimShape::Polyhedron(planes.clone().into()),
+            Shape::Prism {
+                curves,
+                heights,
+                conic,
+                open,
+            } => PrimShape::Prism(Arc::new(shapes::prism::Prism::new(
+                curves, heights[0], heights[1], *conic, *open,
+            ))),
             Shape::Mesh(m) => PrimShape::Mesh(self.mesh(m)),
             Shape::Union { .. } | Shape::Csg { .. } => empty(),
         };

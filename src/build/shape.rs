@@ -4,6 +4,7 @@ use super::csg::Csg;
 use super::mesh::MeshAccel;
 use super::shapes::flat::{self, Polygon};
 use super::shapes::poly::Poly;
+use super::shapes::prism::Prism;
 use super::shapes::quadric::Frustum;
 use super::shapes::surface::Quadric;
 use super::shapes::{solid, torus};
@@ -90,6 +91,8 @@ pub enum PrimShape {
     Polygon(Arc<Polygon>),
     /// A convex polyhedron: outward face planes `(n, d)`.
     Polyhedron(Arc<[(DVec3, f64)]>),
+    /// A `prism`.
+    Prism(Arc<Prism>),
     /// An instance of a shared mesh.
     Mesh(Arc<MeshAccel>),
     /// `merge`, `intersection`, `difference` or a clipped object.
@@ -126,7 +129,8 @@ pub struct Hit {
     /// For a CSG primitive, the index of the leaf hit; else 0.
     pub leaf: u32,
     /// Which part of the shape: the triangle of a mesh, the face of a polyhedron,
-    /// side (0) or end cap (1 base, 2 cap) of a cylinder or cone; else 0.
+    /// side (0) or end cap (1 base, 2 cap) of a cylinder or cone, bottom (0) or top
+    /// (1) cap or wall segment (2 + index) of a prism; else 0.
     pub sub: u32,
 }
 
@@ -227,6 +231,7 @@ impl PrimShape {
             PrimShape::Quadric(q) => q.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
             PrimShape::Poly(q) => q.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
             PrimShape::Mesh(m) => m.intersect(ray, t_min, t_max).map(|(t, i)| (t, 0, i)),
+            PrimShape::Prism(p) => p.nearest(ray, t_min, t_max).map(|(t, sub)| (t, 0, sub)),
             PrimShape::Csg(c) => c.intersect(ray, t_min, t_max),
             PrimShape::Frustum(_) | PrimShape::Torus { .. } => {
                 let mut best: Option<ShapeHit> = None;
@@ -272,6 +277,7 @@ impl PrimShape {
                 torus::hits(*major, *minor, ray, t_min, t_max, &mut |t| f(t, 0))
             }
             PrimShape::Mesh(m) => m.hits(ray, t_min, t_max, f),
+            PrimShape::Prism(p) => p.hits(ray, t_min, t_max, f),
             PrimShape::Quadric(q) => q.hits(ray, t_min, t_max, &mut |t| f(t, 0)),
             PrimShape::Poly(q) => q.hits(ray, t_min, t_max, &mut |t| f(t, 0)),
             _ => {
@@ -298,6 +304,7 @@ impl PrimShape {
             PrimShape::Polygon(pg) => pg.normal,
             PrimShape::Polyhedron(planes) => planes.get(sub as usize).map_or(DVec3::Y, |pl| pl.0),
             PrimShape::Mesh(m) => m.normal(sub),
+            PrimShape::Prism(pr) => pr.normal(p, sub),
             PrimShape::Csg(_) => DVec3::Y,
         }
     }
@@ -347,6 +354,7 @@ impl PrimShape {
             PrimShape::Quadric(q) => q.inside(p),
             PrimShape::Poly(q) => q.inside(p),
             PrimShape::Mesh(m) => m.inside(p),
+            PrimShape::Prism(pr) => pr.inside(p),
             PrimShape::Csg(c) => c.inside(p),
             PrimShape::Triangle { .. }
             | PrimShape::SmoothTriangle(_)
@@ -381,6 +389,7 @@ impl PrimShape {
             }
             PrimShape::Polyhedron(planes) => polyhedron_bounds(planes)?,
             PrimShape::Mesh(m) => m.bounds(),
+            PrimShape::Prism(p) => p.bounds(),
             PrimShape::Csg(c) => return c.bounds(),
         })
     }

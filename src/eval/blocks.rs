@@ -28,6 +28,7 @@ pub(crate) const BLOCKS: &[&str] = &[
     "mesh",
     "mesh2",
     "polyhedron",
+    "prism",
     "merge",
     "intersection",
     "difference",
@@ -73,7 +74,6 @@ const LATER_BLOCKS: &[&str] = &[
     "isosurface",
     "julia_fractal",
     "lathe",
-    "prism",
     "sor",
     "superellipsoid",
     "text",
@@ -131,8 +131,8 @@ impl Evaluator<'_> {
         Ok(Some(match kw {
             "sphere" | "plane" | "box" | "triangle" | "union" | "object" | "cylinder" | "cone"
             | "torus" | "quadric" | "poly" | "cubic" | "quartic" | "disc" | "height_field"
-            | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "polyhedron" | "merge"
-            | "intersection" | "difference" => {
+            | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "polyhedron" | "prism"
+            | "merge" | "intersection" | "difference" => {
                 Value::Object(std::sync::Arc::new(self.object(&mut c)?))
             }
             "clipped_by" | "bounded_by" | "vertex_vectors" | "normal_vectors" | "uv_vectors"

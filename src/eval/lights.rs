@@ -240,11 +240,14 @@ impl Evaluator<'_> {
         match kind {
             Some(("spotlight", _)) => {
                 let b = beam_from(&beam, Beam::SPOT);
-                if b.radius >= 90.0 || b.falloff >= 90.0 {
+                // Half-angles past 90° widen the cone beyond a hemisphere; POV-Ray
+                // 3.7 takes them (its sample lights/laser.pov has falloff 100) and
+                // so does the falloff rule in cos θ.
+                if b.radius >= 180.0 || b.falloff >= 180.0 {
                     let s = beam[0].or(beam[1]).map_or(c.span, |x| x.1);
                     self.report(out_of_range(
                         s,
-                        "a spotlight's radius and falloff must be below 90 degrees".into(),
+                        "a spotlight's radius and falloff must be below 180 degrees".into(),
                         "they are half-angles of the cone: 30 and 45 are the defaults",
                     ));
                 }

@@ -303,9 +303,15 @@ impl Evaluator<'_> {
                 }
             }
             Tok::Kw("open", _)
-                if matches!(obj.shape, Shape::Cylinder { .. } | Shape::Cone { .. }) =>
+                if matches!(
+                    obj.shape,
+                    Shape::Cylinder { .. } | Shape::Cone { .. } | Shape::Prism { .. }
+                ) =>
             {
-                if let Shape::Cylinder { open, .. } | Shape::Cone { open, .. } = &mut obj.shape {
+                if let Shape::Cylinder { open, .. }
+                | Shape::Cone { open, .. }
+                | Shape::Prism { open, .. } = &mut obj.shape
+                {
                     *open = true;
                 }
             }
@@ -368,7 +374,7 @@ impl Evaluator<'_> {
                     span,
                     format!("`open` is not valid in `{}`", c.block),
                 )
-                .with_help("`open` applies to cylinders and cones only")
+                .with_help("`open` applies to cylinders, cones and prisms only")
                 .into());
             }
             other => return Err(self.unexpected(c, &other, OBJECT_MODIFIERS)),

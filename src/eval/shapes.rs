@@ -1,6 +1,6 @@
 //! The shapes beyond the first release: `cylinder`, `cone`, `torus`, `disc`,
-//! `smooth_triangle`, `polygon`, `polyhedron`, and the list blocks that hold
-//! their data (`vertex_vectors { … }` and friends).
+//! `smooth_triangle`, `polygon`, `polyhedron`, `prism`, and the list blocks that
+//! hold their data (`vertex_vectors { … }` and friends).
 
 use super::cursor::{Cursor, Tok};
 use super::value::{Array, Value};
@@ -269,6 +269,7 @@ impl Evaluator<'_> {
                 Shape::Polygon { points }
             }
             "polyhedron" => self.polyhedron(c)?,
+            "prism" => self.prism(c)?,
             _ => return Ok(None),
         };
         Ok(Some(Object::new(shape, span)))
@@ -356,6 +357,180 @@ impl Evaluator<'_> {
         })
     }
 
+    /// `prism { [SPLINE] [SWEEP] [sturm] H1, H2, N, <u, v>… }` (`open` and `sturm`
+    /// after the points are object modifiers).
+    fn prism(&mut self, c: &mut Cursor) -> R<Shape> {
+        use crate::build::shapes::prism::{outline, Spline, Tail};
+        let mut spline = Spline::Linear;
+        let mut conic = false;
+        // The spline and sweep keywords seen so far, with where they were written.
+        type Seen = Option<(&'static str, Span)>;
+        let (mut spline_kw, mut sweep_kw): (Seen, Seen) = (None, None);
+        while let Some(Tok::Kw(kw, span)) = c.peek() {
+            let (kw, span) = (*kw, *span);
+            c.next();
+            let (seen, what) = if let Some(s) = Spline::from_keyword(kw) {
+                spline = s;
+                (&mut spline_kw, "spline type")
+            } else if kw == "linear_sweep" || kw == "conic_sweep" {
+                conic = kw == "conic_sweep";
+                (&mut sweep_kw, "sweep type")
+            } else if kw == "sturm" {
+                continue;
+            } else {
+                return Err(self.unknown_keyword(c, kw, span, PRISM_ITEMS));
+            };
+            if let Some((first, first_span)) = *seen {
+                return Err(Diagnostic::error(
+                    codes::DUPLICATE_PARAMETER,
+                    span,
+                    format!("a prism has one {what}, and `{first}` is already given"),
+                )
+                .with_label(format!("second {what}"))
+                .with_secondary(first_span, "first")
+                .with_help(format!("keep one of `{first}` and `{kw}`"))
+                .into());
+            }
+            *seen = Some((kw, span));
+        }
+        let h1 = self.take_float(c, "the prism's first height")?;
+        c.comma();
+        let h2 = self.take_float(c, "the prism's second height")?;
+        c.comma();
+        let (v, count_span) = c.value("the number of points")?;
+        let n = self.to_float(&v, count_span)?;
+        let kw = spline.keyword();
+        let min = spline.min_points();
+        if n.fract() != 0.0 || n < min as f64 {
+            return Err(Diagnostic::error(
+                codes::INVALID_SIZE,
+                count_span,
+                format!("a `{kw}` prism needs a whole number of at least {min} points, found {n}"),
+            )
+            .with_label("too few points")
+            .with_help(spline.closing_rule())
+            .into());
+        }
+        if spline == Spline::Bezier && !(n as usize).is_multiple_of(4) {
+            return Err(Diagnostic::error(
+                codes::INVALID_SIZE,
+                count_span,
+                format!("a `bezier_spline` prism has 4 points per segment, and {n} is not a multiple of 4"),
+            )
+            .with_label("not a multiple of 4")
+            .with_help(spline.closing_rule())
+            .into());
+        }
+        let mut points = Vec::with_capacity(n as usize);
+        let mut last = count_span;
+        loop {
+            if matches!(c.peek(), Some(Tok::Comma(_))) {
+                c.next();
+            }
+            if !c.value_next() {
+                break;
+            }
+            let (v, s) = c.value("a prism point")?;
+            last = s;
+            points.push(match &v {
+                Value::Float(f) => glam::DVec2::splat(*f),
+                Value::Vector(x) if x.len == 2 => glam::DVec2::new(x.c[0], x.c[1]),
+                Value::Vector(x) => {
+                    return Err(Diagnostic::error(
+                        codes::TYPE_MISMATCH,
+                        s,
+                        format!(
+                            "a prism point is 2-D `<u, v>`, found a vector of {} components",
+                            x.len
+                        ),
+                    )
+                    .with_label("not 2-D")
+                    .with_help("write `<x, z>`: the outline lies in the x-z plane and y is swept")
+                    .into())
+                }
+                other => return Err(self.mismatch("a 2-D point `<u, v>`", other, s)),
+            });
+        }
+        if points.len() != n as usize {
+            return Err(Diagnostic::error(
+                codes::INVALID_SIZE,
+                count_span,
+                format!("this prism says {n} points but lists {}", points.len()),
+            )
+            .with_label("count does not match")
+            .with_secondary(last, "the last point")
+            .with_help(format!(
+                "make the count {}, or list {n} points",
+                points.len()
+            ))
+            .into());
+        }
+        let (curves, tail) = outline(spline, &points);
+        let head = c.span.head();
+        match tail {
+            Tail::Closed => {}
+            Tail::ClosedForYou => self.warn(
+                Diagnostic::warning(
+                    codes::INVALID_SIZE,
+                    last,
+                    "this prism's last outline does not close: it is closed with a line back to its first point",
+                )
+                .with_help("repeat the outline's first point at its end (POV-Ray closes it the same way)"),
+            ),
+            Tail::Ignored(i) | Tail::Unclosed(i) if !curves.is_empty() || i > 0 => {
+                let d = if matches!(tail, Tail::Unclosed(_)) {
+                    Diagnostic::error
+                } else {
+                    Diagnostic::warning
+                };
+                let msg = if i + 1 == points.len() {
+                    format!("point {} of this `{kw}` prism closes no sub-shape", i + 1)
+                } else {
+                    format!(
+                        "points {} to {} of this `{kw}` prism close no sub-shape",
+                        i + 1,
+                        points.len()
+                    )
+                };
+                let diag = d(codes::INVALID_SIZE, last, msg)
+                    .with_label("the outline is still open here");
+                if matches!(tail, Tail::Unclosed(_)) {
+                    return Err(diag.with_help(spline.closing_rule()).into());
+                }
+                self.warn(diag.with_help(format!(
+                    "rts ignores them, as POV-Ray does; {}",
+                    spline.closing_rule()
+                )));
+            }
+            Tail::Ignored(_) | Tail::Unclosed(_) => {}
+        }
+        if curves.is_empty() {
+            return Err(Diagnostic::error(
+                codes::INVALID_SIZE,
+                head,
+                format!("this `{kw}` prism has no closed sub-shape"),
+            )
+            .with_help(spline.closing_rule())
+            .into());
+        }
+        if h1 == h2 {
+            self.warn(
+                Diagnostic::warning(
+                    codes::INVALID_SIZE,
+                    head,
+                    format!("this prism is flat: both heights are {h1}"),
+                )
+                .with_help("give two different heights"),
+            );
+        }
+        Ok(Shape::Prism {
+            curves: curves.into(),
+            heights: [h1, h2],
+            conic,
+            open: false,
+        })
+    }
+
     fn polyhedron(&mut self, c: &mut Cursor) -> R<Shape> {
         let head = c.span.head();
         let missing = |what: &str, ex: &str| -> Fail {
@@ -440,6 +615,17 @@ impl Evaluator<'_> {
         Ok(Shape::Polyhedron { planes })
     }
 }
+
+/// The keywords a `prism` takes before its heights.
+pub(crate) const PRISM_ITEMS: &[&str] = &[
+    "linear_spline",
+    "quadratic_spline",
+    "cubic_spline",
+    "bezier_spline",
+    "linear_sweep",
+    "conic_sweep",
+    "sturm",
+];
 
 /// An edge used by only one face, if any (faces of a closed solid share edges).
 fn open_edge(faces: &[Vec<usize>]) -> Option<(usize, usize)> {

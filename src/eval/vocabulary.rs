@@ -33,6 +33,7 @@ pub const TOP_LEVEL_KEYWORDS: &[&str] = &[
     "plane",
     "poly",
     "polygon",
+    "prism",
     "quadric",
     "quartic",
     "sky_sphere",
@@ -61,6 +62,7 @@ const OBJECTS: &[&str] = &[
     "plane",
     "poly",
     "polygon",
+    "prism",
     "quadric",
     "quartic",
     "smooth_triangle",
@@ -102,6 +104,11 @@ pub fn block_keywords(block: &str) -> Option<Vec<&'static str>> {
             "inside_vector",
         ],
         "cylinder" | "cone" => vec!["open"],
+        "prism" => {
+            let mut v = super::shapes::PRISM_ITEMS.to_vec();
+            v.push("open");
+            v
+        }
         "height_field" => vec!["png", "smooth", "water_level"],
         "clipped_by" | "bounded_by" => OBJECTS.to_vec(),
         "union" | "merge" | "intersection" | "difference" => OBJECTS.to_vec(),

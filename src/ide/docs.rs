@@ -312,7 +312,7 @@ pub const DOCS: &[Doc] = &[
     kw(
         "sturm",
         "sturm",
-        "Accepted on poly, cubic, quartic and torus: rts's root solver is always the careful one.",
+        "Accepted on poly, cubic, quartic, torus and prism: rts's root solvers are always the careful ones.",
     ),
     kw(
         "mesh",
@@ -392,7 +392,7 @@ pub const DOCS: &[Doc] = &[
     kw(
         "open",
         "open",
-        "Leaves out the end caps of a cylinder or cone.",
+        "Leaves out the end caps of a cylinder, cone or prism.",
     ),
     kw("no_shadow", "no_shadow", "The object casts no shadows."),
     kw(
@@ -1030,17 +1030,17 @@ pub const DOCS: &[Doc] = &[
     kw(
         "linear_spline",
         "linear_spline",
-        "Spline type: straight segments.",
+        "Spline type: straight segments (in spline, prism).",
     ),
     kw(
         "quadratic_spline",
         "quadratic_spline",
-        "Spline type: the parabola through the points before, at and after each piece.",
+        "Spline type: the parabola through the points before, at and after each piece (spline, prism).",
     ),
     kw(
         "cubic_spline",
         "cubic_spline",
-        "Spline type: cubic from the second point to the next-to-last (Catmull-Rom slopes).",
+        "Spline type: cubic from the second point to the next-to-last (Catmull-Rom slopes; spline, prism).",
     ),
     kw(
         "natural_spline",
@@ -1066,7 +1066,7 @@ pub const DOCS: &[Doc] = &[
     ),
     kw("key", "key T, VALUE [easing]", "One key of a keyframes block."),
     kw("catmull_rom", "catmull_rom", "Keyframe interpolation: Catmull-Rom."),
-    kw("bezier_spline", "bezier_spline", "Keyframe interpolation: Bézier with `tangent`s."),
+    kw("bezier_spline", "bezier_spline", "Keyframe interpolation: Bézier with `tangent`s; in a prism, every 4 points are one cubic Bézier segment."),
     kw("step_spline", "step_spline", "Keyframe interpolation: hold each key until the next."),
     kw("hold", "hold", "Beyond the keys: keep the end values."),
     kw("loop", "loop", "Beyond the keys: repeat."),
@@ -1105,10 +1105,20 @@ pub const DOCS: &[Doc] = &[
         "lathe { N, POINTS … }",
         "A surface of revolution of a spline.",
     ),
-    later(
+    kw(
         "prism",
-        "prism { Y1, Y2, N, POINTS … }",
-        "An extruded spline.",
+        "prism { [SPLINE] [linear_sweep|conic_sweep] H1, H2, N, <u,v>… [open] … }",
+        "Closed 2-D curves in the x-z plane swept along y from H1 to H2 (conic_sweep: scaled by y from the origin).",
+    ),
+    kw(
+        "linear_sweep",
+        "prism { linear_sweep … }",
+        "Prism sweep (the default): the outline goes straight up from H1 to H2.",
+    ),
+    kw(
+        "conic_sweep",
+        "prism { conic_sweep … }",
+        "Prism sweep: the outline is scaled by y, from a point at the origin to full size at y = 1.",
     ),
     later("sor", "sor { N, POINTS … }", "A surface of revolution."),
     later(

@@ -173,6 +173,20 @@ pub enum Shape {
         /// Face planes `(outward unit normal, d)`: inside is `n·p < d` for all.
         planes: Vec<(DVec3, f64)>,
     },
+    /// `prism { [SPLINE] [SWEEP] H1, H2, N, <u, v>… [open] }`: closed curves in the
+    /// x-z plane (`<u, v>` → x, z) swept along y between the heights, straight up
+    /// or (`conic_sweep`) scaled by y from a point at the origin.
+    Prism {
+        /// The outline's segments, each `c0 + c1 s + c2 s² + c3 s³` for
+        /// `s ∈ [0, 1]` as `<x, z>` (see [`crate::build::shapes::prism::outline`]).
+        curves: Arc<[[glam::DVec2; 4]]>,
+        /// The two heights as written (either order).
+        heights: [f64; 2],
+        /// `conic_sweep`.
+        conic: bool,
+        /// `open`: no caps (inside tests still see a solid, as in POV-Ray).
+        open: bool,
+    },
     /// `mesh { … }` or `mesh2 { … }`: triangles shared by every copy.
     Mesh(Arc<MeshData>),
     /// `merge`, `intersection` or `difference` (a `union` is [`Shape::Union`]).

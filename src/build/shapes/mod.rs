@@ -3,6 +3,7 @@
 
 pub mod flat;
 pub mod poly;
+pub mod prism;
 pub mod quadric;
 pub mod solid;
 pub mod surface;
