@@ -102,3 +102,104 @@ fn gradient_values_follow_x() {
         );
     }
 }
+
+/// Two textures with different finishes: red lit only by `ambient 1`, green by
+/// `ambient 0.5` (no diffuse, so the light does not matter).
+const TWO_FINISHES: &str =
+    "#declare T1 = texture { pigment { rgb <1, 0, 0> } finish { ambient 1 diffuse 0 } }\n\
+    #declare T2 = texture { pigment { rgb <0, 1, 0> } finish { ambient 0.5 diffuse 0 } }\n";
+
+#[test]
+fn checker_texture_picks_each_squares_texture() {
+    // A plane seen straight on, checker squares of side 1 (the image spans
+    // [-2, 2]²): the unit square at the origin takes the first texture.
+    let scene = format!(
+        "{CAMERA}{TWO_FINISHES}plane {{ z, 0 texture {{ checker texture {{ T1 }} texture {{ T2 }} }} }}\n"
+    );
+    let (w, px) = render("checker_textures", &scene, 8, 8);
+    for y in 0..8u32 {
+        for x in 0..8u32 {
+            let (px_x, px_y) = (
+                -2.0 + (f64::from(x) + 0.5) / 2.0,
+                2.0 - (f64::from(y) + 0.5) / 2.0,
+            );
+            let odd = (px_x.floor() + px_y.floor()).rem_euclid(2.0) != 0.0;
+            let want = if odd {
+                [0.0, 0.5, 0.0]
+            } else {
+                [1.0, 0.0, 0.0]
+            };
+            let got = px[(y * w + x) as usize];
+            assert!(close(got, want, 1e-3), "({x}, {y}): {got:?}, want {want:?}");
+        }
+    }
+}
+
+#[test]
+fn texture_map_blends_shaded_colours_linearly() {
+    // gradient x across the image: value (x + 2) / 4, from T1 at 0 to T2 at 1;
+    // the 15 pixels' centres take values (i + 0.5) / 15, the middle one 0.5.
+    let scene = format!(
+        "{CAMERA}{TWO_FINISHES}plane {{ z, 0 texture {{ gradient x texture_map {{ [0 T1] [1 T2] }} scale 4 translate -2*x }} }}\n"
+    );
+    let (w, px) = render("texture_map_blend", &scene, 15, 1);
+    for i in 0..w {
+        let v = (f64::from(i) + 0.5) / 15.0;
+        let want = [1.0 - v, 0.5 * v, 0.0];
+        let got = px[i as usize];
+        assert!(close(got, want, 1e-3), "{i}: {got:?}, want {want:?}");
+    }
+    // The midpoint is the average of the two textures' shaded colours.
+    assert!(close(px[7], [0.5, 0.25, 0.0], 1e-3), "{:?}", px[7]);
+}
+
+#[test]
+fn texture_map_entry_may_be_layered_and_patterned() {
+    // Below 0.5 a layered texture (blue under a clear top layer), above it a
+    // nested checker of textures; transforms of the outer texture move both.
+    let scene = format!(
+        "{CAMERA}{TWO_FINISHES}#declare Layered = texture {{ pigment {{ rgb <0, 0, 1> }} finish {{ ambient 1 diffuse 0 }} }}\n\
+           texture {{ pigment {{ rgbt 1 }} }}\n\
+         #declare Tiles = texture {{ checker texture {{ T1 }} texture {{ T2 }} }}\n\
+         plane {{ z, 0 texture {{ gradient x texture_map {{ [0.5 Layered] [0.5 Tiles] }} scale 4 translate -2*x }} }}\n"
+    );
+    let (w, px) = render("texture_map_nested", &scene, 8, 8);
+    let at = |x: u32, y: u32| px[(y * w + x) as usize];
+    // Left half: the layered texture's blue.
+    assert!(close(at(1, 1), [0.0, 0.0, 1.0], 1e-3), "{:?}", at(1, 1));
+    // Right half: the checker, scaled and moved with the map (cells of side 4
+    // with a corner at x = -2, y = 0): the upper right quarter lies in the cell
+    // of the first texture, the lower right in the cell below it (the second).
+    assert!(close(at(6, 1), [1.0, 0.0, 0.0], 1e-3), "{:?}", at(6, 1));
+    assert!(close(at(6, 6), [0.0, 0.5, 0.0], 1e-3), "{:?}", at(6, 6));
+}
+
+#[test]
+fn path_tracer_picks_textures_by_pattern_and_blend_weight() {
+    // Emission seen directly. Upper half: a checker of two emitting textures, each
+    // square exactly its own. Lower half: a texture_map from one to the other
+    // across the image, where each sample picks one entry with the blend weight as
+    // probability, so the pixels average to the blend.
+    let scene = "global_settings { assumed_gamma 1.0 path_tracing { samples 256 pixel_filter \"box\" } }\n\
+        camera { location <0, 0, -10> direction z*10 right x*4 up y*4 }\n\
+        #declare E1 = texture { pigment { rgb <1, 0, 0> } finish { emission 1 diffuse 0 } }\n\
+        #declare E2 = texture { pigment { rgb <0, 1, 0> } finish { emission 1 diffuse 0 } }\n\
+        plane { z, 0 texture { checker texture { E1 } texture { E2 } } clipped_by { plane { -y, 0 } } }\n\
+        plane { z, 0 texture { gradient x texture_map { [0 E1] [1 E2] } scale 4 translate -2*x } clipped_by { plane { y, 0 } } }\n";
+    let (w, px) = render("path_patterned", scene, 8, 8);
+    let at = |x: u32, y: u32| px[(y * w + x) as usize];
+    // Pixel (4, 3) covers [0, 0.5] × [0, 0.5]; (6, 3) has x in [1, 1.5]; (4, 1)
+    // has y in [1, 1.5].
+    assert!(close(at(4, 3), [1.0, 0.0, 0.0], 1e-4), "{:?}", at(4, 3));
+    assert!(close(at(6, 3), [0.0, 1.0, 0.0], 1e-4), "{:?}", at(6, 3));
+    assert!(close(at(4, 1), [0.0, 1.0, 0.0], 1e-4), "{:?}", at(4, 1));
+    for x in 0..w {
+        let v = (f64::from(x) + 0.5) / 8.0;
+        let got = at(x, 6);
+        assert!(
+            close(got, [1.0 - v, v, 0.0], 0.08),
+            "{x}: {got:?}, want {v}"
+        );
+        assert!((got[0] + got[1] - 1.0).abs() < 1e-4, "{x}: {got:?}");
+    }
+}

@@ -21,7 +21,7 @@ pub(super) fn translucent(primitives: &[Primitive]) -> Vec<bool> {
         }
     }
     fn texture(t: &Texture) -> bool {
-        pigment(&t.pigment) || t.under.as_deref().is_some_and(texture)
+        t.any_plain(&mut |x| pigment(&x.pigment))
     }
     primitives
         .iter()

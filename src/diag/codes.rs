@@ -94,6 +94,10 @@ pub const UNUSED_DECLARE: &str = "rts::lint::unused_declare";
 pub const NO_GAMMA: &str = "rts::lint::assumed_gamma_missing";
 /// A scene with no light sources (warning).
 pub const NO_LIGHTS: &str = "rts::lint::no_lights";
+/// A patterned texture layered over or under another texture.
+pub const PATTERNED_LAYER: &str = "rts::eval::patterned_layer";
+/// Map entries whose values go down (warning).
+pub const MAP_OUT_OF_ORDER: &str = "rts::lint::map_out_of_order";
 /// A deprecated or ignored construct (warning).
 pub const IGNORED: &str = "rts::lint::ignored";
 /// Keyframe times that do not increase.

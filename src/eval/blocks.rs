@@ -50,6 +50,7 @@ pub(crate) const BLOCKS: &[&str] = &[
     "color_map",
     "colour_map",
     "pigment_map",
+    "texture_map",
     "image_map",
     "camera",
     "light_source",
@@ -81,7 +82,6 @@ const LATER_BLOCKS: &[&str] = &[
     "irid",
     "warp",
     "normal_map",
-    "texture_map",
     "media",
     "photons",
     "radiosity",
@@ -154,6 +154,7 @@ impl Evaluator<'_> {
                 Value::ColourMap(std::sync::Arc::new(self.colour_map(&mut c)?))
             }
             "pigment_map" => Value::PigmentMap(std::sync::Arc::new(self.pigment_map(&mut c)?)),
+            "texture_map" => Value::TextureMap(std::sync::Arc::new(self.texture_map(&mut c)?)),
             "image_map" => Value::Pigment(std::sync::Arc::new(self.image_map(&mut c)?)),
             "camera" => Value::Camera(std::sync::Arc::new(self.camera(&mut c)?)),
             "light_source" => Value::Light(std::sync::Arc::new(self.light(&mut c)?)),

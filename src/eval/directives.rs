@@ -239,6 +239,18 @@ impl Evaluator<'_> {
                 while let Some(t) = c.next() {
                     let mut tex = (*self.default_texture).clone();
                     match t {
+                        Tok::Block(_, Value::Texture(t), span) if t.patterned.is_some() => {
+                            let e = Diagnostic::error(
+                                codes::UNEXPECTED_ITEM,
+                                span,
+                                "the default texture cannot be a patterned texture",
+                            )
+                            .with_label("chooses whole textures by a pattern")
+                            .with_help("POV-Ray 3.7 refuses it too: give the objects the patterned texture instead")
+                            .into();
+                            self.report(e);
+                            continue;
+                        }
                         Tok::Block(_, Value::Texture(t), _) => tex = (*t).clone(),
                         Tok::Block(_, Value::Pigment(p), _) => tex.pigment = (*p).clone(),
                         Tok::Block(_, Value::Finish(f), _) => tex.finish = *f,

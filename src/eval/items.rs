@@ -103,7 +103,7 @@ impl Evaluator<'_> {
         let Value::Texture(t) = self.block_value(top)? else {
             return Ok(());
         };
-        let layered = super::materials::layer_texture(below.as_ref(), t);
+        let layered = super::materials::layer_texture(below.as_ref(), t, top.span)?;
         self.bind(local, target, Value::Texture(layered), top.span)
     }
 

@@ -53,9 +53,9 @@ impl Evaluator<'_> {
         }
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
-                Tok::Block(_, Value::Texture(t), _) => {
-                    m.texture = Some(super::materials::layer_texture(m.texture.as_ref(), t));
-                    Ok(())
+                Tok::Block(_, Value::Texture(t), span) => {
+                    super::materials::layer_texture(m.texture.as_ref(), t, span)
+                        .map(|t| m.texture = Some(t))
                 }
                 Tok::Block(_, Value::Interior(i), _) => {
                     m.interior = Some(i);

@@ -213,15 +213,28 @@ impl Evaluator<'_> {
                 apply_transform(obj, &t);
             }
             Tok::Block(_, Value::Transform(t), _) => apply_transform(obj, &t),
-            Tok::Block(_, Value::Texture(t), _) => {
+            Tok::Block(_, Value::Texture(t), span) => {
                 let top = attach(obj, (*t).clone());
-                obj.texture = Some(super::materials::layer_texture(obj.texture.as_ref(), top));
+                obj.texture = Some(super::materials::layer_texture(
+                    obj.texture.as_ref(),
+                    top,
+                    span,
+                )?);
+            }
+            Tok::Block(kw @ ("pigment" | "normal" | "finish"), _, span)
+                if obj.texture.as_ref().is_some_and(|t| t.patterned.is_some()) =>
+            {
+                super::materials::check_not_patterned(obj.texture.as_ref(), kw, span)?;
             }
             Tok::Block(_, Value::Interior(i), _) => obj.interior = Some(i),
-            Tok::Block(_, Value::Material(m), _) => {
+            Tok::Block(_, Value::Material(m), span) => {
                 if let Some(t) = &m.texture {
                     let top = attach(obj, (**t).clone());
-                    obj.texture = Some(super::materials::layer_texture(obj.texture.as_ref(), top));
+                    obj.texture = Some(super::materials::layer_texture(
+                        obj.texture.as_ref(),
+                        top,
+                        span,
+                    )?);
                 }
                 if let Some(i) = &m.interior {
                     obj.interior = Some(i.clone());

@@ -163,6 +163,8 @@ pub enum Value {
     ColourMap(Arc<Vec<(f64, Colour)>>),
     /// A pigment map.
     PigmentMap(Arc<Vec<(f64, Pigment)>>),
+    /// A texture map (entries in the order written).
+    TextureMap(crate::scene::TextureMapEntries),
     /// A macro.
     Macro(Rc<MacroDef>),
     /// A `spline { }`, called as `S(t)`.
@@ -201,6 +203,7 @@ impl Value {
             Value::Interior(_) => "an interior",
             Value::ColourMap(_) => "a colour map",
             Value::PigmentMap(_) => "a pigment map",
+            Value::TextureMap(_) => "a texture map",
             Value::Macro(_) => "a macro",
             Value::Spline(_) => "a spline",
             Value::Poison => "an erroneous value",

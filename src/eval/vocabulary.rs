@@ -6,8 +6,8 @@ use super::blocks::BLOCKS;
 use super::camera::{CAMERA_ITEMS, GLOBAL_ITEMS};
 use super::lights::LIGHT_ITEMS;
 use super::materials::{
-    normal_items, pigment_items, FINISH_ITEMS, IMAGE_MAP_ITEMS, INTERIOR_ITEMS, REFLECTION_ITEMS,
-    TEXTURE_ITEMS,
+    normal_items, pigment_items, texture_items, FINISH_ITEMS, IMAGE_MAP_ITEMS, INTERIOR_ITEMS,
+    REFLECTION_ITEMS,
 };
 use super::objects::{OBJECT_MODIFIERS, TRANSFORMS};
 
@@ -77,7 +77,7 @@ const OBJECTS: &[&str] = &[
 /// contain; for `None`-returning blocks editors should offer everything.
 pub fn block_keywords(block: &str) -> Option<Vec<&'static str>> {
     let mut out: Vec<&'static str> = match block {
-        "texture" => TEXTURE_ITEMS.to_vec(),
+        "texture" => texture_items(),
         "pigment" => pigment_items(),
         "normal" => normal_items(),
         "finish" => FINISH_ITEMS.to_vec(),
@@ -91,7 +91,7 @@ pub fn block_keywords(block: &str) -> Option<Vec<&'static str>> {
         "sky_sphere" => SKY_ITEMS.to_vec(),
         "fog" => FOG_ITEMS.to_vec(),
         "transform" => TRANSFORMS.to_vec(),
-        "color_map" | "colour_map" | "pigment_map" | "background" => Vec::new(),
+        "color_map" | "colour_map" | "pigment_map" | "texture_map" | "background" => Vec::new(),
         "mesh" => vec!["triangle", "smooth_triangle", "inside_vector"],
         "mesh2" => vec![
             "vertex_vectors",

@@ -485,7 +485,7 @@ pub const DOCS: &[Doc] = &[
     kw(
         "texture",
         "texture { pigment { … } normal { … } finish { … } }",
-        "An object's surface: pigment, normal and finish.",
+        "An object's surface: pigment, normal and finish; or a pattern of whole textures (`checker texture { … } texture { … }`, `PATTERN texture_map { … }`).",
     ),
     kw(
         "pigment",
@@ -533,6 +533,11 @@ pub const DOCS: &[Doc] = &[
         "Pigments of a pattern by value.",
     ),
     kw(
+        "texture_map",
+        "texture { PATTERN texture_map { [V pigment { … } finish { … }] [V Texture_Name] … } }",
+        "Whole textures of a pattern by value: between entries both are shaded and blended.",
+    ),
+    kw(
         "image_map",
         "image_map { png \"FILE\" [map_type N] [interpolate N] [once] }",
         "An image as a pigment.",
@@ -561,7 +566,7 @@ pub const DOCS: &[Doc] = &[
     kw(
         "checker",
         "checker COLOUR, COLOUR",
-        "A 3-D checkerboard of unit cubes.",
+        "A 3-D checkerboard of unit cubes (in a texture: `checker texture { … } texture { … }`).",
     ),
     kw(
         "hexagon",
@@ -1138,11 +1143,6 @@ pub const DOCS: &[Doc] = &[
         "normal_map",
         "normal_map { [V normal { … }] … }",
         "Normals of a pattern by value.",
-    ),
-    later(
-        "texture_map",
-        "texture_map { [V texture { … }] … }",
-        "Textures of a pattern by value.",
     ),
     // ------------------------------------------------------------------ built-in constants
     constant("pi", "pi", "3.14159…"),

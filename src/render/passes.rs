@@ -61,7 +61,15 @@ pub fn sample(world: &World, ray: &Ray, pass: Pass, max_depth: f64) -> DVec3 {
             let tp = s
                 .texture_from_world
                 .map_or(s.p, |m| m.transform_point3(s.p));
-            pigment::evaluate(&s.texture.pigment, tp).rgb
+            if s.texture.patterned.is_none() {
+                return pigment::evaluate(&s.texture.pigment, tp).rgb;
+            }
+            // A patterned texture: its textures' pigments, averaged by weight.
+            let mut albedo = DVec3::ZERO;
+            pigment::for_each_plain(s.texture, tp, 1.0, &mut |t, w| {
+                albedo += w * pigment::evaluate(&t.pigment, tp).rgb
+            });
+            albedo
         }
         (Pass::Albedo, None) => world.background,
         _ => DVec3::ZERO,

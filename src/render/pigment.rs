@@ -1,9 +1,12 @@
-//! Pigment and normal evaluation: patterns, colour and pigment maps, image maps
-//! and bump perturbation.
+//! Pigment and normal evaluation: patterns, colour and pigment maps, image maps,
+//! bump perturbation, and the textures a patterned texture chooses.
 
 mod image_map;
 pub mod noise;
 pub mod patterns;
+pub mod texture_map;
+
+pub use texture_map::{for_each_plain, plain_at};
 
 use crate::scene::{Colour, Mapped, Normal, Pattern, PatternMap, Pigment};
 use glam::{DMat4, DVec2, DVec3};

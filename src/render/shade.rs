@@ -117,11 +117,6 @@ fn layers(tex: &Texture) -> impl Iterator<Item = &Texture> {
 }
 
 /// Colour of the surface `s` seen along `ray`.
-///
-/// POV-Ray's rule for transparency: each layer's ambient, emission and diffuse
-/// light is scaled by its opacity `1 - filter - transmit`; what passes through is
-/// scaled by `filter · colour + transmit` and continues into the layer below, and
-/// past the last layer into the object (refracted by the interior's `ior`).
 fn shade(
     world: &World,
     s: &SurfaceHit,
@@ -130,10 +125,44 @@ fn shade(
     weight: f64,
     ctx: &mut TraceCtx,
 ) -> DVec3 {
+    shade_texture(world, s, s.texture, ray, level, weight, ctx)
+}
+
+/// Colour of the surface `s` with texture `tex` seen along `ray`.
+///
+/// A patterned texture shades the texture its pattern chooses; between two
+/// entries of a `texture_map` it shades both, each with its share of the ray's
+/// weight, and averages the colours by the blend (as POV-Ray does).
+///
+/// POV-Ray's rule for transparency: each layer's ambient, emission and diffuse
+/// light is scaled by its opacity `1 - filter - transmit`; what passes through is
+/// scaled by `filter · colour + transmit` and continues into the layer below, and
+/// past the last layer into the object (refracted by the interior's `ior`).
+fn shade_texture(
+    world: &World,
+    s: &SurfaceHit,
+    tex: &Texture,
+    ray: &Ray,
+    level: u32,
+    weight: f64,
+    ctx: &mut TraceCtx,
+) -> DVec3 {
     let (p, geo_n) = (s.p, s.geo_normal);
+    let tp = s.texture_from_world.map_or(p, |m| m.transform_point3(p));
+    if let Some(pt) = &tex.patterned {
+        return match pigment::texture_map::choose(pt, tp) {
+            pigment::texture_map::Choice::One(t) => {
+                shade_texture(world, s, t, ray, level, weight, ctx)
+            }
+            pigment::texture_map::Choice::Blend(a, b, t) => {
+                let ca = shade_texture(world, s, a, ray, level, weight * (1.0 - t), ctx);
+                let cb = shade_texture(world, s, b, ray, level, weight * t, ctx);
+                ca * (1.0 - t) + cb * t
+            }
+        };
+    }
     let d = ray.dir.normalize();
     let facing = |n: DVec3| if n.dot(d) > 0.0 { -n } else { n };
-    let tp = s.texture_from_world.map_or(p, |m| m.transform_point3(p));
     let ior = s.interior.map_or(1.0, |i| i.ior);
     // Entering when the ray meets the outside of the geometric surface.
     let entering = d.dot(geo_n) < 0.0;
@@ -143,7 +172,7 @@ fn shade(
     let mut through = DVec3::ONE;
     let mut conserve = DVec3::ONE;
     let mut last_n = facing(s.normal);
-    for tex in layers(s.texture) {
+    for tex in layers(tex) {
         let c = pigment::evaluate_uv(&tex.pigment, tp, s.uv);
         let n = match &tex.normal {
             Some(nrm) => pigment::perturb(nrm, facing(s.normal), p, s.texture_from_world),
@@ -308,16 +337,38 @@ pub fn shadow_filter(world: &World, ray: &Ray, t_min: f64, t_max: f64, hint: &mu
         let tp = s
             .texture_from_world
             .map_or(s.p, |m| m.transform_point3(s.p));
-        for tex in layers(s.texture) {
-            let c = pigment::evaluate_uv(&tex.pigment, tp, s.uv);
-            through *= c.filter * c.rgb + DVec3::splat(c.transmit);
+        if s.texture.patterned.is_some() {
+            // The filters of the textures the pattern shows here, averaged by
+            // their blend weights.
+            let mut sum = DVec3::ZERO;
+            pigment::for_each_plain(s.texture, tp, 1.0, &mut |t, w| {
+                sum += w * layers_filter(t, tp, s.uv);
+            });
+            through *= sum;
             if through.max_element() <= 0.0 {
                 return DVec3::ZERO;
+            }
+        } else {
+            for tex in layers(s.texture) {
+                let c = pigment::evaluate_uv(&tex.pigment, tp, s.uv);
+                through *= c.filter * c.rgb + DVec3::splat(c.transmit);
+                if through.max_element() <= 0.0 {
+                    return DVec3::ZERO;
+                }
             }
         }
         t0 = hit.t + crate::build::surface_offset(s.p);
     }
     DVec3::ZERO
+}
+
+/// The product of `filter · colour + transmit` over the layers of plain texture
+/// `tex` at `tp`: what passes through it.
+fn layers_filter(tex: &Texture, tp: DVec3, uv: Option<glam::DVec2>) -> DVec3 {
+    layers(tex).fold(DVec3::ONE, |through, t| {
+        let c = pigment::evaluate_uv(&t.pigment, tp, uv);
+        through * (c.filter * c.rgb + DVec3::splat(c.transmit))
+    })
 }
 
 /// `x` to the power `e`: exact shortcuts for the common exponents of finishes

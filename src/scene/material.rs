@@ -46,6 +46,47 @@ pub struct Texture {
     /// `under` holds A): they show through where this layer's pigment has filter or
     /// transmit.
     pub under: Option<std::sync::Arc<Texture>>,
+    /// A patterned texture (`texture { checker texture { A } texture { B } }`,
+    /// `texture { gradient y texture_map { … } }`): the pattern chooses whole
+    /// textures, and this texture's own pigment, normal and finish are unused.
+    /// Patterned textures are never layered (`under` is `None`), as in POV-Ray.
+    pub patterned: Option<Arc<PatternedTexture>>,
+}
+
+/// A pattern that chooses between whole textures.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PatternedTexture {
+    /// The pattern function.
+    pub kind: PatternKind,
+    /// Its modifiers (turbulence, wave form, frequency, phase).
+    pub mods: PatternMods,
+    /// Transforms of the pattern (the textures inside carry their own copies).
+    pub transform: Option<Arc<Transform>>,
+    /// The textures the pattern chooses from.
+    pub entries: TextureEntries,
+}
+
+/// The entries of a `texture_map { [v TEXTURE] … }`, in the order written.
+pub type TextureMapEntries = Arc<Vec<(f64, Arc<Texture>)>>;
+
+/// What a patterned texture's pattern chooses from.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TextureEntries {
+    /// `texture_map { [v TEXTURE] … }`, in the order written (POV-Ray does not
+    /// sort texture maps; see `render::pigment::map_lookup`).
+    Map(TextureMapEntries),
+    /// The textures of a list pattern (`checker`: 2, `hexagon`: 3, `brick`: 2).
+    List(Vec<Arc<Texture>>),
+}
+
+impl PatternedTexture {
+    /// The textures the pattern chooses from.
+    pub fn textures(&self) -> Vec<&Arc<Texture>> {
+        match &self.entries {
+            TextureEntries::Map(m) => m.iter().map(|(_, t)| t).collect(),
+            TextureEntries::List(l) => l.iter().collect(),
+        }
+    }
 }
 
 impl Texture {
@@ -53,12 +94,40 @@ impl Texture {
     /// up by the surface's uv coordinates (`image_map { … uv_mapping }`), so the
     /// renderer need not compute uv for other surfaces.
     pub fn uses_uv(&self) -> bool {
-        self.pigment.uses_uv() || self.under.as_ref().is_some_and(|t| t.uses_uv())
+        self.any_plain(&mut |t| t.pigment.uses_uv())
+    }
+
+    /// Whether `f` holds for any plain texture this one is made of: its layers, or
+    /// (for a patterned texture) the layers of every texture its pattern may choose.
+    pub fn any_plain(&self, f: &mut impl FnMut(&Texture) -> bool) -> bool {
+        match &self.patterned {
+            Some(pt) => pt.textures().into_iter().any(|t| t.any_plain(f)),
+            None => f(self) || self.under.as_ref().is_some_and(|t| t.any_plain(f)),
+        }
     }
 
     /// Appends `t` to the transforms of every pattern of the texture (pigment and
     /// normal), as `translate`/`rotate`/`scale` written after them do.
     pub fn transform_patterns(&mut self, t: &Transform) {
+        if let Some(pt) = &mut self.patterned {
+            // The transform applies to the whole texture: the pattern and every
+            // texture it chooses (POV-Ray's manual; measured: a `scale` written
+            // before or after the `texture_map` scales the entries' patterns too).
+            let pt = Arc::make_mut(pt);
+            compose(&mut pt.transform, t);
+            let moved = |x: &Arc<Texture>| {
+                let mut inner = (**x).clone();
+                inner.transform_patterns(t);
+                Arc::new(inner)
+            };
+            pt.entries = match &pt.entries {
+                TextureEntries::Map(m) => {
+                    TextureEntries::Map(Arc::new(m.iter().map(|(v, x)| (*v, moved(x))).collect()))
+                }
+                TextureEntries::List(l) => TextureEntries::List(l.iter().map(moved).collect()),
+            };
+            return;
+        }
         compose(&mut self.pigment.transform, t);
         if let Some(n) = &mut self.normal {
             compose(&mut n.transform, t);

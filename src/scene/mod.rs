@@ -20,7 +20,8 @@ pub use camera::{Camera, CameraKind};
 pub use light::{AreaLight, Beam, Light, LightKind};
 pub use material::{
     compose, Colour, Finish, ImageMap, Interior, Mapped, Normal, Pattern, PatternKind, PatternMap,
-    PatternMods, Pigment, Reflection, Texture, Wave,
+    PatternMods, PatternedTexture, Pigment, Reflection, Texture, TextureEntries, TextureMapEntries,
+    Wave,
 };
 pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape};
 pub use path::{PathTracing, PixelFilter};

@@ -87,6 +87,9 @@ impl Material {
     /// varies over the surface or with the viewing angle.
     pub fn constant(tex: &Texture, interior: Option<&Interior>) -> Option<Material> {
         let r = &tex.finish.reflection;
+        if tex.patterned.is_some() {
+            return None;
+        }
         let crate::scene::Pattern::Solid(c) = tex.pigment.pattern else {
             return None;
         };
@@ -179,7 +182,12 @@ impl Bsdf {
     /// The scattering at hit `s`, seen from unit direction `wo` (towards the
     /// viewer). Uses the top texture layer.
     pub fn at(s: &SurfaceHit, wo: DVec3) -> Bsdf {
-        let tex = &**s.texture;
+        Bsdf::of_texture(s, s.texture, wo)
+    }
+
+    /// As [`Bsdf::at`] with plain texture `tex` in place of the hit's own (the
+    /// texture a patterned texture chose there).
+    pub fn of_texture(s: &SurfaceHit, tex: &Texture, wo: DVec3) -> Bsdf {
         let n = match &tex.normal {
             Some(nrm) => pigment::perturb(nrm, facing(s.normal, wo), s.p, s.texture_from_world),
             None => facing(s.normal, wo),

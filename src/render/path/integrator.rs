@@ -146,10 +146,10 @@ pub fn radiance(
                     // does the lighting, so it neither reflects nor emits for other
                     // paths.
                     if prev_delta {
-                        let tex = &**s.texture;
                         let tp = s
                             .texture_from_world
                             .map_or(s.p, |m| m.transform_point3(s.p));
+                        let tex = super::super::pigment::plain_at(s.texture, tp, 0.5);
                         let c = super::super::pigment::evaluate_uv(&tex.pigment, tp, s.uv);
                         let glow = (tex.finish.ambient * world.global.ambient_light
                             + tex.finish.emission)
@@ -167,6 +167,16 @@ pub fn radiance(
                 geo_normal = s.geo_normal;
                 match material {
                     Some(m) => m.at(s.normal, s.geo_normal, wo),
+                    // A patterned texture: one of the textures its pattern shows
+                    // here, picked by their blend weights (one more sample value).
+                    None if s.texture.patterned.is_some() => {
+                        let tp = s
+                            .texture_from_world
+                            .map_or(s.p, |m| m.transform_point3(s.p));
+                        let tex =
+                            super::super::pigment::plain_at(s.texture, tp, sampler.next_f64());
+                        Bsdf::of_texture(&s, tex, wo)
+                    }
                     None => Bsdf::at(&s, wo),
                 }
             }
