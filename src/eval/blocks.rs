@@ -125,7 +125,10 @@ impl Evaluator<'_> {
         let mut toks = Sink::new();
         let lists = matches!(kw, "poly" | "cubic" | "quartic");
         let outer = std::mem::replace(&mut self.coefficient_lists, lists);
+        let defer = kw == "texture" || super::objects::OBJECT_BLOCKS.contains(&kw);
+        let outer_defer = std::mem::replace(&mut self.defer_material_blocks, defer);
         self.expand(&b.items, &mut toks);
+        self.defer_material_blocks = outer_defer;
         self.coefficient_lists = outer;
         let mut c = Cursor::new(toks.toks, kw, b.span);
         if kw == "object" && matches!(c.peek(), Some(Tok::Val(Value::Light(_), _))) {

@@ -21,6 +21,9 @@ pub(crate) enum Tok {
     Semi(Span),
     /// `[ … ]`, evaluated.
     Bracket(Vec<Tok>, Span),
+    /// A `pigment`, `finish` or `normal` block written in a texture or an
+    /// object, not evaluated yet: it modifies the one in force there.
+    Deferred(std::rc::Rc<crate::syntax::ast::Block>),
 }
 
 impl Tok {
@@ -32,6 +35,7 @@ impl Tok {
             | Tok::Comma(s)
             | Tok::Semi(s)
             | Tok::Bracket(_, s) => *s,
+            Tok::Deferred(b) => b.span,
         }
     }
 
@@ -44,6 +48,7 @@ impl Tok {
             Tok::Comma(_) => "`,`".into(),
             Tok::Semi(_) => "`;`".into(),
             Tok::Bracket(..) => "`[ … ]`".into(),
+            Tok::Deferred(b) => format!("a `{}` block", b.keyword.name),
         }
     }
 }

@@ -54,6 +54,12 @@ impl Evaluator<'_> {
                     self.report(f);
                 }
             }
+            Item::Block(b)
+                if self.defer_material_blocks
+                    && matches!(b.keyword.name, "pigment" | "finish" | "normal") =>
+            {
+                out.push(Tok::Deferred(Rc::new((**b).clone())));
+            }
             Item::Block(b) => match self.block(b) {
                 // `keyframes { }` stands for its value at the current time.
                 Ok(Some(v)) if b.keyword.name == "keyframes" => out.push(Tok::Val(v, b.span)),
@@ -117,6 +123,10 @@ impl Evaluator<'_> {
     /// Puts what a top-level item produced into the scene.
     fn place(&mut self, tok: Tok) {
         let fail: Fail = match tok {
+            Tok::Deferred(b) => {
+                let t = self.undefer(&b, None);
+                return self.place(t);
+            }
             Tok::Block(_, Value::Object(o), _) => {
                 let mut o = Arc::try_unwrap(o).unwrap_or_else(|a| (*a).clone());
                 if o.texture.is_none() {

@@ -236,6 +236,22 @@ impl Evaluator<'_> {
         // The pattern written in this block, with its textures and transforms.
         let mut pat: Option<TexturePatternSpec> = None;
         while let Some(tok) = c.next() {
+            // `pigment { … }`, `finish { … }`, `normal { … }` modify the texture's own.
+            let tok = match tok {
+                Tok::Deferred(b) => {
+                    let base = if pat.is_some() || declared_patterned {
+                        None
+                    } else {
+                        match b.keyword.name {
+                            "pigment" => Some(Value::Pigment(Arc::new(tex.pigment.clone()))),
+                            "finish" => Some(Value::Finish(Arc::new(tex.finish))),
+                            _ => tex.normal.clone().map(|n| Value::Normal(Arc::new(n))),
+                        }
+                    };
+                    self.undefer(&b, base)
+                }
+                t => t,
+            };
             let r: R<()> = match tok {
                 // POV-Ray also takes a declared pigment, finish or normal written
                 // bare inside a texture: `texture { Jade }`.

@@ -22,6 +22,7 @@ mod material_block;
 mod materials;
 mod mesh;
 mod mesh_cache;
+mod modify;
 mod objects;
 mod path_tracing;
 mod patterns;
@@ -195,6 +196,7 @@ pub fn eval_cached(
         mesh_cache: std::mem::take(&mut cache.meshes),
         data_files: Default::default(),
         coefficient_lists: false,
+        defer_material_blocks: false,
     };
     ev.define_command_line();
     ev.run_top(&file.items);
@@ -254,6 +256,11 @@ pub(crate) struct Evaluator<'a> {
     /// there, a vector of more than 5 numbers (other than a 12-number matrix) is
     /// a list of coefficients (a one-dimensional array).
     pub(crate) coefficient_lists: bool,
+    /// Set while the items of a texture or an object are read: there a
+    /// `pigment`, `finish` or `normal` block modifies the one in force, as in
+    /// POV-Ray, so it is kept unevaluated ([`cursor::Tok::Deferred`]) until the
+    /// reader knows what it modifies (see `modify.rs`).
+    pub(crate) defer_material_blocks: bool,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps

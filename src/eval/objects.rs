@@ -37,6 +37,34 @@ pub(crate) const OBJECT_MODIFIERS: &[&str] = &[
 /// The transform keywords.
 pub(crate) const TRANSFORMS: &[&str] = &["translate", "rotate", "scale", "matrix", "transform"];
 
+/// The keywords of object blocks (their items may modify the object's texture).
+pub(crate) const OBJECT_BLOCKS: &[&str] = &[
+    "sphere",
+    "plane",
+    "box",
+    "triangle",
+    "union",
+    "object",
+    "cylinder",
+    "cone",
+    "torus",
+    "quadric",
+    "poly",
+    "cubic",
+    "quartic",
+    "disc",
+    "height_field",
+    "smooth_triangle",
+    "polygon",
+    "mesh",
+    "mesh2",
+    "polyhedron",
+    "prism",
+    "merge",
+    "intersection",
+    "difference",
+];
+
 impl Evaluator<'_> {
     /// Evaluates an object block (`c.block` says which).
     pub(crate) fn object(&mut self, c: &mut Cursor) -> R<Object> {
@@ -197,6 +225,28 @@ impl Evaluator<'_> {
         .into()
     }
 
+    /// What an object-level `pigment`, `finish` or `normal` block (`kw`) modifies:
+    /// the object's texture's (or the default texture's), with its patterns as they
+    /// lie in the world now (the object's transforms so far applied back); `None`
+    /// for a patterned texture, which has no single one.
+    fn material_base(&self, obj: &Object, kw: &str) -> Option<Value> {
+        let tex = obj.texture.as_deref().unwrap_or(&self.default_texture);
+        if tex.patterned.is_some() {
+            return None;
+        }
+        let mut world = tex.clone();
+        if obj.texture.is_some() {
+            if let Some(t) = obj.transform.as_deref() {
+                world.transform_patterns(t);
+            }
+        }
+        match kw {
+            "pigment" => Some(Value::Pigment(Arc::new(world.pigment))),
+            "finish" => Some(Value::Finish(Arc::new(world.finish))),
+            _ => world.normal.map(|n| Value::Normal(Arc::new(n))),
+        }
+    }
+
     /// The modifiers after an object's parameters; errors are reported and skipped.
     fn modifiers(&mut self, obj: &mut Object, c: &mut Cursor, is_union: bool) {
         while let Some(tok) = c.next() {
@@ -207,6 +257,13 @@ impl Evaluator<'_> {
     }
 
     fn modifier(&mut self, obj: &mut Object, c: &mut Cursor, tok: Tok, is_union: bool) -> R<()> {
+        let tok = match tok {
+            Tok::Deferred(b) => {
+                let base = self.material_base(obj, b.keyword.name);
+                self.undefer(&b, base)
+            }
+            t => t,
+        };
         match tok {
             Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => {
                 let t = self.transform_kw(kw, span, c)?;

@@ -1,0 +1,69 @@
+//! POV-Ray's rule that a `pigment`, `finish` or `normal` written in a texture or an
+//! object modifies the one in force there rather than starting afresh:
+//! `texture { T finish { diffuse 0.5 } }` keeps T's ambient, `texture { T pigment {
+//! octaves 3 rotate 90*z } }` keeps T's pattern and colours, and `object { O
+//! pigment { scale 2 } }` scales O's pigment. Such blocks are read as
+//! [`Tok::Deferred`] while their texture or object is expanded, and evaluated here
+//! once the reader knows what they modify, so their items run exactly once.
+
+use super::cursor::{Cursor, Sink, Tok};
+use super::objects::TRANSFORMS;
+use super::patterns::MODIFIERS;
+use super::value::Value;
+use super::Evaluator;
+use crate::syntax::ast::Block;
+use std::sync::Arc;
+
+/// Whether a `kw` block whose first item is `first` modifies the one in force
+/// (rather than replacing it): it starts with a modifier or a transform, or is
+/// empty. A block that starts with a pattern, a colour or a declared name says
+/// what it is by itself.
+fn modifies(kw: &str, first: Option<&Tok>) -> bool {
+    if kw == "finish" {
+        // Every finish item is a modifier: only a declared finish starts afresh.
+        return !matches!(first, Some(Tok::Val(Value::Finish(_), _)));
+    }
+    match first {
+        None => true,
+        Some(Tok::Kw(k, _)) => {
+            MODIFIERS.contains(k) || TRANSFORMS.contains(k) || (kw == "normal" && *k == "bump_size")
+        }
+        Some(Tok::Block(k, _, _)) => {
+            *k == "transform" || (kw == "pigment" && matches!(*k, "color_map" | "colour_map"))
+        }
+        Some(_) => false,
+    }
+}
+
+impl Evaluator<'_> {
+    /// Evaluates the deferred `pigment`, `finish` or `normal` block `b` as a
+    /// modification of `base` (the one in force where it is written; `None` when
+    /// there is nothing to modify), giving the token an eager read would have.
+    pub(crate) fn undefer(&mut self, b: &Block, base: Option<Value>) -> Tok {
+        let kw = b.keyword.name;
+        let mut sink = Sink::new();
+        // What is inside the block is not itself in a texture or object.
+        let outer = std::mem::replace(&mut self.defer_material_blocks, false);
+        self.expand(&b.items, &mut sink);
+        self.defer_material_blocks = outer;
+        let mut toks = sink.toks;
+        if let Some(base) = base {
+            if modifies(kw, toks.first()) {
+                toks.insert(0, Tok::Val(base, b.keyword.span));
+            }
+        }
+        let mut c = Cursor::new(toks, kw, b.span);
+        let value = match kw {
+            "pigment" => self.pigment(&mut c).map(|p| Value::Pigment(Arc::new(p))),
+            "finish" => self.finish(&mut c).map(|f| Value::Finish(Arc::new(f))),
+            _ => self.normal(&mut c).map(|n| Value::Normal(Arc::new(n))),
+        };
+        match value {
+            Ok(v) => Tok::Block(kw, v, b.span),
+            Err(f) => {
+                self.report(f);
+                Tok::Block(kw, Value::Poison, b.span)
+            }
+        }
+    }
+}
