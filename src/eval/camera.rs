@@ -51,6 +51,8 @@ pub(crate) const GLOBAL_ITEMS: &[&str] = &[
     "max_trace_level",
     "adc_bailout",
     "noise_generator",
+    "number_of_waves",
+    "hf_gray_16",
     "path_tracing",
 ];
 
@@ -451,6 +453,48 @@ impl Evaluator<'_> {
                 )
                 .into()),
                 Tok::Kw("noise_generator", span) => self.noise_generator(c, span),
+                Tok::Kw("number_of_waves", _) => {
+                    c.value("the number of wave centres").and_then(|(v, s)| {
+                        let n = self.to_float(&v, s)?;
+                        if n < 1.0 || n.fract() != 0.0 {
+                            return Err(Diagnostic::error(
+                                codes::OUT_OF_RANGE,
+                                s,
+                                format!("number_of_waves is a whole number from 1, found {n}"),
+                            )
+                            .with_help("POV-Ray's default is 10")
+                            .into());
+                        }
+                        if n > 10.0 {
+                            self.warn(
+                                Diagnostic::warning(
+                                    codes::IGNORED,
+                                    s,
+                                    format!("rts has 10 wave centres; number_of_waves {n} uses 10"),
+                                )
+                                .with_help("use 10 or fewer"),
+                            );
+                        }
+                        self.scene.global.number_of_waves = n.min(10.0) as u8;
+                        Ok(())
+                    })
+                }
+                Tok::Kw("hf_gray_16", span) => {
+                    let on_off = if c.value_next() {
+                        c.value("on or off").map(|_| ())
+                    } else {
+                        Ok(())
+                    };
+                    self.warn(
+                        Diagnostic::warning(
+                            codes::IGNORED,
+                            span,
+                            "`hf_gray_16` (grey 16-bit output for height fields) is ignored by rts",
+                        )
+                        .with_help("write 16-bit output with `--bit-depth 16`; a grey scene gives grey pixels"),
+                    );
+                    on_off
+                }
                 other => Err(self.unexpected(c, &other, GLOBAL_ITEMS)),
             };
             if let Err(f) = r {

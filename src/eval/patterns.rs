@@ -103,6 +103,7 @@ impl Evaluator<'_> {
     pub(crate) fn new_spec(&self) -> PatternSpec {
         let mut spec = PatternSpec::default();
         spec.mods.noise_generator = self.scene.global.noise_generator;
+        spec.mods.number_of_waves = self.scene.global.number_of_waves;
         spec
     }
 

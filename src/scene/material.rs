@@ -300,6 +300,9 @@ pub struct PatternMods {
     pub noise_generator: u8,
     /// `agate_turb`: how turbulent `agate` is (default 1).
     pub agate_turb: f64,
+    /// `number_of_waves` in force: how many wave centres `waves` and `ripples`
+    /// sum (1 to 10; default 10).
+    pub number_of_waves: u8,
 }
 
 impl Default for PatternMods {
@@ -314,6 +317,7 @@ impl Default for PatternMods {
             phase: 0.0,
             noise_generator: 2,
             agate_turb: 1.0,
+            number_of_waves: 10,
         }
     }
 }

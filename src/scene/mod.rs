@@ -77,6 +77,9 @@ pub struct GlobalSettings {
     pub adc_bailout: f64,
     /// `noise_generator`: 1, 2 or 3 (default 2); patterns declared after it use it.
     pub noise_generator: u8,
+    /// `number_of_waves`: wave centres of `waves` and `ripples` (1 to 10, default
+    /// 10); patterns declared after it use it.
+    pub number_of_waves: u8,
     /// `path_tracing { … }` (rts): render with the path tracer, with these settings.
     pub path_tracing: Option<PathTracing>,
 }
@@ -89,6 +92,7 @@ impl Default for GlobalSettings {
             max_trace_level: 5,
             adc_bailout: 1.0 / 255.0,
             noise_generator: 2,
+            number_of_waves: 10,
             path_tracing: None,
         }
     }

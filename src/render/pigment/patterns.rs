@@ -104,14 +104,15 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
         }
         PatternKind::Ripples | PatternKind::Waves => {
             let mut sum = 0.0;
-            for (i, c) in CENTRES.iter().enumerate() {
+            let n = usize::from(m.number_of_waves.clamp(1, 10));
+            for (i, c) in CENTRES[..n].iter().enumerate() {
                 let d = (p - *c).length();
                 let f = if matches!(kind, PatternKind::Waves) {
                     1.0 + (i as f64) / 10.0
                 } else {
                     1.0
                 };
-                sum += (TAU * (d * m.frequency * f + m.phase)).sin() / 10.0;
+                sum += (TAU * (d * m.frequency * f + m.phase)).sin() / n as f64;
             }
             // Spread like POV-Ray's (measured contrast of a grey-mapped render).
             let spread = if matches!(kind, PatternKind::Waves) {
@@ -248,14 +249,16 @@ pub fn value_gradient(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<D
             let waves = matches!(kind, PatternKind::Waves);
             let mut sum = 0.0;
             let mut slope = DVec3::ZERO;
-            for (i, c) in CENTRES.iter().enumerate() {
+            let n = usize::from(m.number_of_waves.clamp(1, 10));
+            let k = n as f64;
+            for (i, c) in CENTRES[..n].iter().enumerate() {
                 let r = p - *c;
                 let d = r.length();
                 let f = if waves { 1.0 + (i as f64) / 10.0 } else { 1.0 };
                 let (sin, cos) = (TAU * (d * m.frequency * f + m.phase)).sin_cos();
-                sum += sin / 10.0;
+                sum += sin / k;
                 if d > 0.0 {
-                    slope += r * (cos * TAU * m.frequency * f / (10.0 * d));
+                    slope += r * (cos * TAU * m.frequency * f / (k * d));
                 }
             }
             let spread = if waves { WAVES_SPREAD } else { RIPPLES_SPREAD };
@@ -312,6 +315,21 @@ mod tests {
         let p = DVec3::new(1.0, 2.0, 3.0);
         let s = (1f64.sin() + 2f64.sin() + 3f64.sin()) / 3.0;
         assert!((value(&PatternKind::Leopard, p, &mods()) - s * s).abs() < 1e-12);
+    }
+
+    #[test]
+    fn number_of_waves_sums_that_many_centres() {
+        // One centre: ripples are one sine of the distance from it.
+        let m = PatternMods {
+            number_of_waves: 1,
+            ..mods()
+        };
+        let p = DVec3::new(0.7, -0.2, 1.3);
+        let d = (p - CENTRES[0]).length();
+        let want = (0.5 + RIPPLES_SPREAD * (TAU * d).sin()).clamp(0.0, 1.0);
+        assert!((value(&PatternKind::Ripples, p, &m) - want).abs() < 1e-12);
+        // The default (10) differs from one centre.
+        assert!((value(&PatternKind::Ripples, p, &mods()) - want).abs() > 1e-6);
     }
 
     #[test]
