@@ -51,6 +51,7 @@ pub(crate) const BLOCKS: &[&str] = &[
     "colour_map",
     "pigment_map",
     "texture_map",
+    "tiles",
     "image_map",
     "camera",
     "light_source",
@@ -172,6 +173,7 @@ impl Evaluator<'_> {
             }
             "sky_sphere" => Value::SkySphere(std::sync::Arc::new(self.sky_sphere(&mut c)?)),
             "fog" => Value::Fog(std::sync::Arc::new(self.fog(&mut c)?)),
+            "tiles" => Value::Texture(std::sync::Arc::new(self.tiles(&mut c)?)),
             "material" => Value::Material(std::sync::Arc::new(self.material(&mut c)?)),
             "path_tracing" => {
                 self.path_tracing(&mut c)?;

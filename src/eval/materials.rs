@@ -221,10 +221,16 @@ impl Evaluator<'_> {
     /// modifiers transforms }`.
     pub(crate) fn texture(&mut self, c: &mut Cursor) -> R<Texture> {
         let (mut tex, declared) = match c.peek() {
-            Some(Tok::Val(Value::Texture(_), _)) => match c.next() {
-                Some(Tok::Val(Value::Texture(t), _)) => ((*t).clone(), true),
-                _ => unreachable!(),
-            },
+            // `tiles { … }` (POV-Ray's older checker of textures) stands for the
+            // patterned texture it makes, like a declared one.
+            Some(Tok::Val(Value::Texture(_), _) | Tok::Block("tiles", Value::Texture(_), _)) => {
+                match c.next() {
+                    Some(
+                        Tok::Val(Value::Texture(t), _) | Tok::Block("tiles", Value::Texture(t), _),
+                    ) => ((*t).clone(), true),
+                    _ => unreachable!(),
+                }
+            }
             Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
             _ => ((*self.default_texture).clone(), false),
         };
@@ -337,6 +343,63 @@ impl Evaluator<'_> {
             Some(p) => self.finish_patterned(p),
             None => Ok(tex),
         }
+    }
+
+    /// `tiles { TEXTURE… tile2 TEXTURE… }`: POV-Ray's older spelling of a checker
+    /// of two textures (several textures in a row on one side are layers).
+    pub(crate) fn tiles(&mut self, c: &mut Cursor) -> R<Texture> {
+        let mut sides: [Option<Arc<Texture>>; 2] = [None, None];
+        let mut side = 0;
+        let mut tile2: Option<Span> = None;
+        while let Some(tok) = c.next() {
+            let r: R<()> = match tok {
+                Tok::Block("texture", Value::Texture(t), span) => {
+                    layer_texture(sides[side].as_ref(), t, span).map(|l| sides[side] = Some(l))
+                }
+                Tok::Kw("tile2", span) if tile2.is_none() => {
+                    tile2 = Some(span);
+                    side = 1;
+                    Ok(())
+                }
+                Tok::Block(_, Value::Poison, _) => Err(Fail::silent()),
+                other => Err(self.unexpected(c, &other, &["texture", "tile2"])),
+            };
+            if let Err(f) = r {
+                self.report(f);
+            }
+        }
+        let missing = |what: &str, help: &str| -> Fail {
+            Diagnostic::error(
+                codes::MISSING_VALUE,
+                c.span,
+                format!("`tiles` needs {what}"),
+            )
+            .with_help(help.to_string())
+            .into()
+        };
+        let [Some(a), Some(b)] = sides else {
+            return Err(if tile2.is_none() {
+                missing(
+                    "`tile2` between its two textures",
+                    "write `tiles { texture { … } tile2 texture { … } }`",
+                )
+            } else {
+                missing(
+                    "a texture on each side of `tile2`",
+                    "write `tiles { texture { … } tile2 texture { … } }`",
+                )
+            });
+        };
+        let span = c.span;
+        // Measured against POV-Ray 3.7: `tiles`' first texture lies where
+        // `checker`'s second does.
+        let toks = vec![
+            Tok::Kw("checker", span),
+            Tok::Block("texture", Value::Texture(b), span),
+            Tok::Block("texture", Value::Texture(a), span),
+        ];
+        let mut inner = Cursor::new(toks, "texture", span);
+        self.texture(&mut inner)
     }
 
     /// Reads pattern keyword `kw` (already taken) in a texture, and for list

@@ -1014,6 +1014,36 @@ pub const DOCS: &[Doc] = &[
         "Ground fog: how fast it thins with height.",
     ),
     kw(
+        "number_of_waves",
+        "number_of_waves N",
+        "global_settings: wave centres of waves and ripples (1 to 10, default 10).",
+    ),
+    kw(
+        "hf_gray_16",
+        "hf_gray_16 [on]",
+        "global_settings: POV-Ray's grey 16-bit output; ignored by rts (use --bit-depth 16).",
+    ),
+    kw(
+        "tiles",
+        "tiles { texture { … } tile2 texture { … } }",
+        "POV-Ray's older checker of two textures.",
+    ),
+    kw(
+        "tile2",
+        "tiles { … tile2 texture { … } }",
+        "Starts the second texture of `tiles`.",
+    ),
+    kw(
+        "quick_color",
+        "quick_color COLOUR",
+        "POV-Ray's preview colour for low quality; no effect on the picture.",
+    ),
+    kw(
+        "quick_colour",
+        "quick_colour COLOUR",
+        "POV-Ray's preview colour for low quality; no effect on the picture.",
+    ),
+    kw(
         "turb_depth",
         "turb_depth D",
         "Fog turbulence: where along the ray it is taken (0 camera, 1 surface; default 0.5).",
