@@ -733,7 +733,6 @@ const POV_KEYWORDS_NOT_YET: &[&str] = &[
     "average",
     "boxed",
     "cells",
-    "crackle",
     "cylindrical",
     "density_file",
     "facets",

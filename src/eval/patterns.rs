@@ -13,6 +13,7 @@ use std::sync::Arc;
 pub(crate) const PATTERNS: &[&str] = &[
     "checker", "hexagon", "brick", "gradient", "radial", "onion", "leopard", "spotted", "bozo",
     "marble", "wood", "granite", "agate", "wrinkles", "ripples", "waves", "bumps", "dents",
+    "crackle",
 ];
 
 /// Pattern modifiers.
@@ -32,6 +33,10 @@ pub(crate) const MODIFIERS: &[&str] = &[
     "brick_size",
     "mortar",
     "agate_turb",
+    "form",
+    "metric",
+    "offset",
+    "solid",
 ];
 
 /// A pattern being read: kind, modifiers and map.
@@ -152,6 +157,11 @@ impl Evaluator<'_> {
             "marble" => PatternKind::Marble,
             "wood" => PatternKind::Wood,
             "granite" => PatternKind::Granite,
+            "crackle" => PatternKind::Crackle {
+                form: DVec3::new(-1.0, 1.0, 0.0),
+                metric: 2.0,
+                solid: false,
+            },
             "agate" => PatternKind::Agate,
             "wrinkles" => PatternKind::Wrinkles,
             "ripples" => PatternKind::Ripples,
@@ -247,6 +257,50 @@ impl Evaluator<'_> {
             "poly_wave" => {
                 let e = self.take_optional_float(c, 1.0)?;
                 spec.wave = Some(Wave::Poly(e));
+            }
+            "form" | "metric" | "solid" | "offset" => {
+                let Some(PatternKind::Crackle {
+                    form,
+                    metric,
+                    solid,
+                }) = &mut spec.kind
+                else {
+                    return Err(Diagnostic::error(
+                        codes::UNKNOWN_PARAMETER,
+                        c.last,
+                        format!("`{kw}` applies to the `crackle` pattern only"),
+                    )
+                    .with_help("write `crackle` before it")
+                    .into());
+                };
+                match kw {
+                    "solid" => *solid = true,
+                    "form" => *form = self.take_vec3(c, "the form <F1, F2, F3>")?,
+                    "metric" => {
+                        let (v, s) = c.value("the metric exponent")?;
+                        let m = self.to_float(&v, s)?;
+                        if m <= 0.0 {
+                            return Err(Diagnostic::error(
+                                codes::OUT_OF_RANGE,
+                                s,
+                                format!("`metric` must be positive, found {m}"),
+                            )
+                            .with_help("2 is the usual distance, 1 the Manhattan distance")
+                            .into());
+                        }
+                        *metric = m;
+                    }
+                    _ => {
+                        let (_, s) = c.value("the offset")?;
+                        return Err(Diagnostic::error(
+                            codes::UNSUPPORTED,
+                            s,
+                            "crackle's `offset` is not implemented in rts yet",
+                        )
+                        .with_help("remove it; the cells are drawn as with offset 0")
+                        .into());
+                    }
+                }
             }
             "brick_size" | "mortar" => {
                 let (v, s) = c.value(&format!("a value after `{kw}`"))?;

@@ -1014,6 +1014,31 @@ pub const DOCS: &[Doc] = &[
         "Ground fog: how fast it thins with height.",
     ),
     kw(
+        "crackle",
+        "crackle [form V] [metric P] [solid]",
+        "Cells around random points: distance to the second nearest minus the nearest.",
+    ),
+    kw(
+        "form",
+        "crackle form <F1, F2, F3>",
+        "crackle: weights of the distances to the nearest three points (default <-1, 1, 0>).",
+    ),
+    kw(
+        "metric",
+        "crackle metric P",
+        "crackle: the distance exponent (2 Euclidean, 1 Manhattan).",
+    ),
+    kw(
+        "solid",
+        "crackle solid",
+        "crackle: one value per cell.",
+    ),
+    later(
+        "offset",
+        "crackle offset F",
+        "crackle: offsets the distances (not implemented yet).",
+    ),
+    kw(
         "number_of_waves",
         "number_of_waves N",
         "global_settings: wave centres of waves and ripples (1 to 10, default 10).",

@@ -237,6 +237,16 @@ pub enum PatternKind {
     Wood,
     /// `granite`: 1/f fractal noise.
     Granite,
+    /// `crackle`: cells around random points, one per unit cube; the value
+    /// weighs the distances to the nearest three by `form`.
+    Crackle {
+        /// `form <F1, F2, F3>` (default `<-1, 1, 0>`: second nearest minus nearest).
+        form: glam::DVec3,
+        /// `metric P`: the Minkowski distance exponent (default 2, Euclidean).
+        metric: f64,
+        /// `solid`: each cell one value (of the noise at its point).
+        solid: bool,
+    },
     /// `agate`: turbulent sine bands.
     Agate,
     /// `wrinkles`: sum of noise octaves.
