@@ -25,7 +25,7 @@ pub use shape::{Hit, PrimShape, Primitive, ShapeHit, SmoothTriangle};
 
 use crate::scene::{
     Camera, CsgOp, GlobalSettings, Interior, Light, MeshData, Object, ObjectFlags, Scene, Shape,
-    Texture, Transform,
+    TextData, Texture, Transform,
 };
 use csg::{Csg, CsgLeaf, CsgNode, GroupKind};
 use glam::{DMat4, DVec2, DVec3};
@@ -187,6 +187,8 @@ struct Builder {
     meshes: FxHashMap<*const MeshData, Arc<MeshAccel>>,
     /// Hierarchies of the previous build, by mesh address.
     previous: FxHashMap<usize, Arc<MeshAccel>>,
+    /// Glyph prisms by outline address and thickness, shared by repeated letters.
+    glyphs: FxHashMap<(usize, u64), Arc<shapes::prism::Prism>>,
 }
 
 impl Builder {
@@ -200,6 +202,43 @@ impl Builder {
                     .unwrap_or_else(|| Arc::new(MeshAccel::new(m.clone())))
             })
             .clone()
+    }
+
+    /// The glyphs of a `text` at `world_from_obj`: one prism each, placed by
+    /// [`shapes::text::glyph_placement`].
+    fn glyphs(
+        &mut self,
+        text: &TextData,
+        world_from_obj: Option<&Transform>,
+    ) -> Vec<(PrimShape, Option<Transform>)> {
+        text.glyphs
+            .iter()
+            .filter_map(|(curves, origin)| {
+                let key = (
+                    Arc::as_ptr(curves) as *const DVec2 as usize,
+                    text.thickness.to_bits(),
+                );
+                let prism = self
+                    .glyphs
+                    .entry(key)
+                    .or_insert_with(|| {
+                        Arc::new(shapes::prism::Prism::new(
+                            curves,
+                            0.0,
+                            text.thickness,
+                            false,
+                            false,
+                        ))
+                    })
+                    .clone();
+                let place = Transform::from_matrix(shapes::text::glyph_placement(*origin))?;
+                let t = match world_from_obj {
+                    Some(w) => place.then(w),
+                    None => place,
+                };
+                Some((PrimShape::Prism(prism), Some(t)))
+            })
+            .collect()
     }
 
     /// The placement and inheritance of `obj` under a parent at `parent`.
@@ -261,6 +300,12 @@ impl Builder {
             }
             return;
         }
+        if let Shape::Text(text) = &obj.shape {
+            for (shape, transform) in self.glyphs(text, world_from_obj.as_ref()) {
+                self.prims.push(primitive(shape, transform, &here));
+            }
+            return;
+        }
         let (shape, transform) = self.leaf_shape(&obj.shape, world_from_obj);
         self.prims.push(primitive(shape, transform, &here));
     }
@@ -307,20 +352,22 @@ impl Builder {
                     inverse: false,
                 }
             }
+            Shape::Text(text) => CsgNode::Group {
+                kind: GroupKind::Union,
+                children: self
+                    .glyphs(text, world_from_obj.as_ref())
+                    .into_iter()
+                    .map(|(shape, transform)| {
+                        leaves.push(leaf(primitive(shape, transform, &here)));
+                        CsgNode::Leaf(leaves.len() as u32 - 1)
+                    })
+                    .collect(),
+                inverse: false,
+            },
             shape => {
                 let (shape, transform) = self.leaf_shape(shape, world_from_obj);
                 let p = primitive(shape, transform, &here);
-                leaves.push(CsgLeaf {
-                    shape: p.shape,
-                    transform: p.transform,
-                    texture: p.texture,
-                    texture_from_world: p.texture_from_world,
-                    interior: p.interior,
-                    inverse: false,
-                    flip: false,
-                    surface: true,
-                    bounds: p.bounds,
-                });
+                leaves.push(leaf(p));
                 CsgNode::Leaf(leaves.len() as u32 - 1)
             }
         };
@@ -437,9 +484,24 @@ impl Builder {
                 curves, heights[0], heights[1], *conic, *open,
             ))),
             Shape::Mesh(m) => PrimShape::Mesh(self.mesh(m)),
-            Shape::Union { .. } | Shape::Csg { .. } => empty(),
+            Shape::Union { .. } | Shape::Csg { .. } | Shape::Text(_) => empty(),
         };
         (shape, world_from_obj)
+    }
+}
+
+/// A CSG leaf of primitive `p`: a surface, not inverted.
+fn leaf(p: Primitive) -> CsgLeaf {
+    CsgLeaf {
+        shape: p.shape,
+        transform: p.transform,
+        texture: p.texture,
+        texture_from_world: p.texture_from_world,
+        interior: p.interior,
+        inverse: false,
+        flip: false,
+        surface: true,
+        bounds: p.bounds,
     }
 }
 
