@@ -117,7 +117,6 @@ impl Evaluator<'_> {
                     format!("cannot read `{name}` as a font: {e}"),
                 )
                 .with_label("not a usable font")
-                .with_note(format!("read from {}", path.display()))
                 .with_help("give a TrueType (.ttf) or OpenType (.otf) font file")
                 .into())
             }

@@ -3,10 +3,10 @@ use crate::build::shapes::prism::Prism;
 use crate::build::Ray;
 use glam::DVec3;
 
-/// rts's own test font (see examples/fonts/make_rtsblock.py): 1000 units per em;
+/// rts's own test font (see examples/assets/make_rtsblock.py): 1000 units per em;
 /// `r` advance 400, xMin 80; `t` advance 400, xMin 40, xMax 360, height 650;
 /// `.notdef` a 400 × 700 box with a hole; `r` then `t` kerned by −40.
-const BLOCK: &[u8] = include_bytes!("../../../../examples/fonts/rtsblock.ttf");
+const BLOCK: &[u8] = include_bytes!("../../../../examples/assets/rtsblock.ttf");
 
 fn block() -> Font {
     Font::parse(BLOCK.to_vec()).expect("test font parses")

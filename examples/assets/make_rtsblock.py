@@ -2,7 +2,7 @@
 
 The glyphs are drawn here (no other font's outlines are used), so the font is
 part of rts and under its licence (MIT OR Apache-2.0). Regenerate with
-`pip install fonttools && python3 examples/fonts/make_rtsblock.py`.
+`pip install fonttools && python3 examples/assets/make_rtsblock.py`.
 
 Glyphs (1000 units per em): .notdef (a box with a square hole), space, and
 lower-case r, t, s, o, and x; `r` followed by `t` is kerned by -40 units.
