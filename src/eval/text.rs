@@ -93,7 +93,8 @@ impl Evaluator<'_> {
         c.comma();
         let (v, s) = c.value("the offset added after each character, e.g. 0 or <0.1, 0>")?;
         let offset = self.to_vec3(&v, s)?;
-        if offset.z != 0.0 {
+        // A float offset is the same in x, y and z: only a written z is worth a word.
+        if matches!(&v, Value::Vector(x) if x.len >= 3) && offset.z != 0.0 {
             self.warn(
                 Diagnostic::warning(
                     codes::IGNORED,

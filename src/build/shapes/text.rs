@@ -54,7 +54,15 @@ impl Font {
     /// Reads a font file's bytes (the first font of a collection); the error says
     /// what is wrong.
     pub fn parse(data: Vec<u8>) -> Result<Font, String> {
-        let face = Face::parse(&data, 0).map_err(|e| e.to_string())?;
+        let face = Face::parse(&data, 0).map_err(|e| match e {
+            ttf_parser::FaceParsingError::UnknownMagic => {
+                "the file does not start like a TrueType or OpenType font".to_string()
+            }
+            ttf_parser::FaceParsingError::MalformedFont => {
+                "the font file is damaged or cut short".to_string()
+            }
+            e => e.to_string(),
+        })?;
         if face.tables().cmap.is_none() {
             return Err("the font has no character map (`cmap` table)".into());
         }
