@@ -860,6 +860,75 @@ mod tests {
         assert_eq!(w.bounds, b.union(&w.primitives[1].bounds.unwrap()));
     }
 
+    /// "ox" in rts's block font, 0.5 deep, scaled by 2 and moved up by 1:
+    /// one primitive per glyph; rays through the o's hole miss; the glyphs are a
+    /// solid, also as the second operand of a `difference`.
+    #[test]
+    fn text_is_one_prism_per_glyph_and_a_solid() {
+        let font = include_bytes!("../../examples/assets/rtsblock.ttf");
+        let mut f = shapes::text::Font::parse(font.to_vec()).expect("font");
+        let layout = f.layout("ox", DVec2::ZERO);
+        let text = Shape::Text(Arc::new(TextData {
+            glyphs: layout
+                .glyphs
+                .into_iter()
+                .map(|g| (g.curves, g.origin))
+                .collect(),
+            thickness: 0.5,
+        }));
+        let place = Transform::scale(DVec3::splat(2.0)).then(&Transform::translate(DVec3::Y));
+        let word = Object {
+            transform: Some(Arc::new(place)),
+            ..obj(text.clone())
+        };
+        let w = build(&Scene {
+            objects: vec![word],
+            ..Scene::default()
+        });
+        assert_eq!(w.primitives.len(), 2);
+        // The o: 0.04..0.46 em from its origin, moved left by its xMin (0.04);
+        // ring from x 0.04 to 0.15 (em), hole around 0.21 at y 0.25.
+        let at = |x: f64, y: f64| DVec3::new(2.0 * x, 1.0 + 2.0 * y, -5.0);
+        let ray = |p: DVec3| Ray::new(p, DVec3::Z);
+        let hit = w.intersect(&ray(at(0.05, 0.25)), 0.0, f64::INFINITY, RayKind::Camera);
+        let hit = hit.expect("the o's ring");
+        assert!((hit.t - 5.0).abs() < 1e-9, "front at z = 0: t = {}", hit.t);
+        let n = w.primitives[hit.prim as usize].shape.clone();
+        assert!(matches!(n, PrimShape::Prism(_)));
+        assert!(w
+            .intersect(&ray(at(0.21, 0.25)), 0.0, f64::INFINITY, RayKind::Camera)
+            .is_none());
+        assert!(w.inside(DVec3::new(0.1, 1.5, 0.5)));
+        assert!(!w.inside(DVec3::new(0.1, 1.5, 1.5)), "behind: z > 2 × 0.5");
+        assert!(!w.inside(DVec3::new(0.42, 1.5, 0.5)), "in the hole");
+        // A slab minus the text: the ring is carved out, the hole stays.
+        let slab = obj(Shape::Box {
+            min: DVec3::new(-1.0, 0.0, 0.2),
+            max: DVec3::new(3.0, 3.0, 0.4),
+        });
+        let carved = obj(Shape::Csg {
+            op: CsgOp::Difference,
+            children: vec![
+                slab,
+                Object {
+                    transform: Some(Arc::new(place)),
+                    ..obj(text)
+                },
+            ],
+        });
+        let w = build(&Scene {
+            objects: vec![carved],
+            ..Scene::default()
+        });
+        assert!(!w.inside(DVec3::new(0.1, 1.5, 0.3)), "carved ring");
+        assert!(w.inside(DVec3::new(0.42, 1.5, 0.3)), "the o's hole is slab");
+        assert!(w
+            .intersect(&ray(at(0.05, 0.25)), 0.0, f64::INFINITY, RayKind::Camera)
+            .is_none());
+        let hit = w.intersect(&ray(at(0.21, 0.25)), 0.0, f64::INFINITY, RayKind::Camera);
+        assert!((hit.expect("the slab in the hole").t - 5.2).abs() < 1e-9);
+    }
+
     #[test]
     fn world_is_send_and_sync() {
         fn check<T: Send + Sync>() {}
