@@ -187,8 +187,8 @@ struct Builder {
     meshes: FxHashMap<*const MeshData, Arc<MeshAccel>>,
     /// Hierarchies of the previous build, by mesh address.
     previous: FxHashMap<usize, Arc<MeshAccel>>,
-    /// Glyph prisms by outline address and thickness, shared by repeated letters.
-    glyphs: FxHashMap<(usize, u64), Arc<shapes::prism::Prism>>,
+    /// Glyph prisms by outline address and heights, shared by repeated letters.
+    glyphs: FxHashMap<(usize, u64, u64), Arc<shapes::prism::Prism>>,
 }
 
 impl Builder {
@@ -205,40 +205,46 @@ impl Builder {
     }
 
     /// The glyphs of a `text` at `world_from_obj`: one prism each, placed by
-    /// [`shapes::text::glyph_placement`].
+    /// [`shapes::text::glyph_placement`]. A negative thickness gives, as in
+    /// POV-Ray 3.7, only the two faces at z = thickness and z = 0: two flat
+    /// prisms per glyph, no walls and no inside.
     fn glyphs(
         &mut self,
         text: &TextData,
         world_from_obj: Option<&Transform>,
     ) -> Vec<(PrimShape, Option<Transform>)> {
-        text.glyphs
-            .iter()
-            .filter_map(|(curves, origin)| {
+        let t = text.thickness;
+        let heights: &[(f64, f64)] = if t < 0.0 {
+            &[(t, t), (0.0, 0.0)]
+        } else {
+            &[(0.0, t)]
+        };
+        let mut out = Vec::new();
+        for (curves, origin) in &text.glyphs {
+            let Some(place) = Transform::from_matrix(shapes::text::glyph_placement(*origin)) else {
+                continue;
+            };
+            let place = match world_from_obj {
+                Some(w) => place.then(w),
+                None => place,
+            };
+            for &(h0, h1) in heights {
                 let key = (
                     Arc::as_ptr(curves) as *const DVec2 as usize,
-                    text.thickness.to_bits(),
+                    h0.to_bits(),
+                    h1.to_bits(),
                 );
                 let prism = self
                     .glyphs
                     .entry(key)
                     .or_insert_with(|| {
-                        Arc::new(shapes::prism::Prism::new(
-                            curves,
-                            0.0,
-                            text.thickness,
-                            false,
-                            false,
-                        ))
+                        Arc::new(shapes::prism::Prism::new(curves, h0, h1, false, false))
                     })
                     .clone();
-                let place = Transform::from_matrix(shapes::text::glyph_placement(*origin))?;
-                let t = match world_from_obj {
-                    Some(w) => place.then(w),
-                    None => place,
-                };
-                Some((PrimShape::Prism(prism), Some(t)))
-            })
-            .collect()
+                out.push((PrimShape::Prism(prism), Some(place)));
+            }
+        }
+        out
     }
 
     /// The placement and inheritance of `obj` under a parent at `parent`.
@@ -912,7 +918,7 @@ mod tests {
                 slab,
                 Object {
                     transform: Some(Arc::new(place)),
-                    ..obj(text)
+                    ..obj(text.clone())
                 },
             ],
         });
@@ -927,6 +933,27 @@ mod tests {
             .is_none());
         let hit = w.intersect(&ray(at(0.21, 0.25)), 0.0, f64::INFINITY, RayKind::Camera);
         assert!((hit.expect("the slab in the hole").t - 5.2).abs() < 1e-9);
+        // A negative thickness: the two faces only (POV-Ray 3.7), not a solid.
+        let Shape::Text(data) = &text else {
+            unreachable!()
+        };
+        let flat = Shape::Text(Arc::new(TextData {
+            thickness: -0.5,
+            ..(**data).clone()
+        }));
+        let w = build(&Scene {
+            objects: vec![obj(flat)],
+            ..Scene::default()
+        });
+        assert_eq!(w.primitives.len(), 4);
+        assert!(!w.inside(DVec3::new(0.05, 0.25, -0.25)));
+        let r = Ray::new(DVec3::new(0.05, 0.25, -5.0), DVec3::Z);
+        let hit = w.intersect(&r, 0.0, f64::INFINITY, RayKind::Camera);
+        assert!((hit.expect("front face").t - 4.5).abs() < 1e-9);
+        let side = Ray::new(DVec3::new(-1.0, 0.25, -0.25), DVec3::X);
+        assert!(w
+            .intersect(&side, 0.0, f64::INFINITY, RayKind::Camera)
+            .is_none());
     }
 
     #[test]
