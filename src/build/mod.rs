@@ -25,7 +25,7 @@ pub use shape::{Hit, PrimShape, Primitive, ShapeHit, SmoothTriangle};
 
 use crate::scene::{
     Camera, CsgOp, GlobalSettings, Interior, Light, MeshData, Object, ObjectFlags, Scene, Shape,
-    Texture, Transform,
+    TextData, Texture, Transform,
 };
 use csg::{Csg, CsgLeaf, CsgNode, GroupKind};
 use glam::{DMat4, DVec2, DVec3};
@@ -187,6 +187,8 @@ struct Builder {
     meshes: FxHashMap<*const MeshData, Arc<MeshAccel>>,
     /// Hierarchies of the previous build, by mesh address.
     previous: FxHashMap<usize, Arc<MeshAccel>>,
+    /// Glyph prisms by outline address and heights, shared by repeated letters.
+    glyphs: FxHashMap<(usize, u64, u64), Arc<shapes::prism::Prism>>,
 }
 
 impl Builder {
@@ -200,6 +202,49 @@ impl Builder {
                     .unwrap_or_else(|| Arc::new(MeshAccel::new(m.clone())))
             })
             .clone()
+    }
+
+    /// The glyphs of a `text` at `world_from_obj`: one prism each, placed by
+    /// [`shapes::text::glyph_placement`]. A negative thickness gives, as in
+    /// POV-Ray 3.7, only the two faces at z = thickness and z = 0: two flat
+    /// prisms per glyph, no walls and no inside.
+    fn glyphs(
+        &mut self,
+        text: &TextData,
+        world_from_obj: Option<&Transform>,
+    ) -> Vec<(PrimShape, Option<Transform>)> {
+        let t = text.thickness;
+        let heights: &[(f64, f64)] = if t < 0.0 {
+            &[(t, t), (0.0, 0.0)]
+        } else {
+            &[(0.0, t)]
+        };
+        let mut out = Vec::new();
+        for (curves, origin) in &text.glyphs {
+            let Some(place) = Transform::from_matrix(shapes::text::glyph_placement(*origin)) else {
+                continue;
+            };
+            let place = match world_from_obj {
+                Some(w) => place.then(w),
+                None => place,
+            };
+            for &(h0, h1) in heights {
+                let key = (
+                    Arc::as_ptr(curves) as *const DVec2 as usize,
+                    h0.to_bits(),
+                    h1.to_bits(),
+                );
+                let prism = self
+                    .glyphs
+                    .entry(key)
+                    .or_insert_with(|| {
+                        Arc::new(shapes::prism::Prism::new(curves, h0, h1, false, false))
+                    })
+                    .clone();
+                out.push((PrimShape::Prism(prism), Some(place)));
+            }
+        }
+        out
     }
 
     /// The placement and inheritance of `obj` under a parent at `parent`.
@@ -261,6 +306,12 @@ impl Builder {
             }
             return;
         }
+        if let Shape::Text(text) = &obj.shape {
+            for (shape, transform) in self.glyphs(text, world_from_obj.as_ref()) {
+                self.prims.push(primitive(shape, transform, &here));
+            }
+            return;
+        }
         let (shape, transform) = self.leaf_shape(&obj.shape, world_from_obj);
         self.prims.push(primitive(shape, transform, &here));
     }
@@ -307,20 +358,22 @@ impl Builder {
                     inverse: false,
                 }
             }
+            Shape::Text(text) => CsgNode::Group {
+                kind: GroupKind::Union,
+                children: self
+                    .glyphs(text, world_from_obj.as_ref())
+                    .into_iter()
+                    .map(|(shape, transform)| {
+                        leaves.push(leaf(primitive(shape, transform, &here)));
+                        CsgNode::Leaf(leaves.len() as u32 - 1)
+                    })
+                    .collect(),
+                inverse: false,
+            },
             shape => {
                 let (shape, transform) = self.leaf_shape(shape, world_from_obj);
                 let p = primitive(shape, transform, &here);
-                leaves.push(CsgLeaf {
-                    shape: p.shape,
-                    transform: p.transform,
-                    texture: p.texture,
-                    texture_from_world: p.texture_from_world,
-                    interior: p.interior,
-                    inverse: false,
-                    flip: false,
-                    surface: true,
-                    bounds: p.bounds,
-                });
+                leaves.push(leaf(p));
                 CsgNode::Leaf(leaves.len() as u32 - 1)
             }
         };
@@ -437,9 +490,24 @@ impl Builder {
                 curves, heights[0], heights[1], *conic, *open,
             ))),
             Shape::Mesh(m) => PrimShape::Mesh(self.mesh(m)),
-            Shape::Union { .. } | Shape::Csg { .. } => empty(),
+            Shape::Union { .. } | Shape::Csg { .. } | Shape::Text(_) => empty(),
         };
         (shape, world_from_obj)
+    }
+}
+
+/// A CSG leaf of primitive `p`: a surface, not inverted.
+fn leaf(p: Primitive) -> CsgLeaf {
+    CsgLeaf {
+        shape: p.shape,
+        transform: p.transform,
+        texture: p.texture,
+        texture_from_world: p.texture_from_world,
+        interior: p.interior,
+        inverse: false,
+        flip: false,
+        surface: true,
+        bounds: p.bounds,
     }
 }
 
@@ -796,6 +864,96 @@ mod tests {
         assert_eq!(plane.texture.finish.diffuse, 0.6);
         assert!(!plane.flags.no_shadow);
         assert_eq!(w.bounds, b.union(&w.primitives[1].bounds.unwrap()));
+    }
+
+    /// "ox" in rts's block font, 0.5 deep, scaled by 2 and moved up by 1:
+    /// one primitive per glyph; rays through the o's hole miss; the glyphs are a
+    /// solid, also as the second operand of a `difference`.
+    #[test]
+    fn text_is_one_prism_per_glyph_and_a_solid() {
+        let font = include_bytes!("../../examples/assets/rtsblock.ttf");
+        let mut f = shapes::text::Font::parse(font.to_vec()).expect("font");
+        let layout = f.layout("ox", DVec2::ZERO);
+        let text = Shape::Text(Arc::new(TextData {
+            glyphs: layout
+                .glyphs
+                .into_iter()
+                .map(|g| (g.curves, g.origin))
+                .collect(),
+            thickness: 0.5,
+        }));
+        let place = Transform::scale(DVec3::splat(2.0)).then(&Transform::translate(DVec3::Y));
+        let word = Object {
+            transform: Some(Arc::new(place)),
+            ..obj(text.clone())
+        };
+        let w = build(&Scene {
+            objects: vec![word],
+            ..Scene::default()
+        });
+        assert_eq!(w.primitives.len(), 2);
+        // The o: 0.04..0.46 em from its origin, moved left by its xMin (0.04);
+        // ring from x 0.04 to 0.15 (em), hole around 0.21 at y 0.25.
+        let at = |x: f64, y: f64| DVec3::new(2.0 * x, 1.0 + 2.0 * y, -5.0);
+        let ray = |p: DVec3| Ray::new(p, DVec3::Z);
+        let hit = w.intersect(&ray(at(0.05, 0.25)), 0.0, f64::INFINITY, RayKind::Camera);
+        let hit = hit.expect("the o's ring");
+        assert!((hit.t - 5.0).abs() < 1e-9, "front at z = 0: t = {}", hit.t);
+        let n = w.primitives[hit.prim as usize].shape.clone();
+        assert!(matches!(n, PrimShape::Prism(_)));
+        assert!(w
+            .intersect(&ray(at(0.21, 0.25)), 0.0, f64::INFINITY, RayKind::Camera)
+            .is_none());
+        assert!(w.inside(DVec3::new(0.1, 1.5, 0.5)));
+        assert!(!w.inside(DVec3::new(0.1, 1.5, 1.5)), "behind: z > 2 × 0.5");
+        assert!(!w.inside(DVec3::new(0.42, 1.5, 0.5)), "in the hole");
+        // A slab minus the text: the ring is carved out, the hole stays.
+        let slab = obj(Shape::Box {
+            min: DVec3::new(-1.0, 0.0, 0.2),
+            max: DVec3::new(3.0, 3.0, 0.4),
+        });
+        let carved = obj(Shape::Csg {
+            op: CsgOp::Difference,
+            children: vec![
+                slab,
+                Object {
+                    transform: Some(Arc::new(place)),
+                    ..obj(text.clone())
+                },
+            ],
+        });
+        let w = build(&Scene {
+            objects: vec![carved],
+            ..Scene::default()
+        });
+        assert!(!w.inside(DVec3::new(0.1, 1.5, 0.3)), "carved ring");
+        assert!(w.inside(DVec3::new(0.42, 1.5, 0.3)), "the o's hole is slab");
+        assert!(w
+            .intersect(&ray(at(0.05, 0.25)), 0.0, f64::INFINITY, RayKind::Camera)
+            .is_none());
+        let hit = w.intersect(&ray(at(0.21, 0.25)), 0.0, f64::INFINITY, RayKind::Camera);
+        assert!((hit.expect("the slab in the hole").t - 5.2).abs() < 1e-9);
+        // A negative thickness: the two faces only (POV-Ray 3.7), not a solid.
+        let Shape::Text(data) = &text else {
+            unreachable!()
+        };
+        let flat = Shape::Text(Arc::new(TextData {
+            thickness: -0.5,
+            ..(**data).clone()
+        }));
+        let w = build(&Scene {
+            objects: vec![obj(flat)],
+            ..Scene::default()
+        });
+        assert_eq!(w.primitives.len(), 4);
+        assert!(!w.inside(DVec3::new(0.05, 0.25, -0.25)));
+        let r = Ray::new(DVec3::new(0.05, 0.25, -5.0), DVec3::Z);
+        let hit = w.intersect(&r, 0.0, f64::INFINITY, RayKind::Camera);
+        assert!((hit.expect("front face").t - 4.5).abs() < 1e-9);
+        let side = Ray::new(DVec3::new(-1.0, 0.25, -0.25), DVec3::X);
+        assert!(w
+            .intersect(&side, 0.0, f64::INFINITY, RayKind::Camera)
+            .is_none());
     }
 
     #[test]

@@ -29,6 +29,7 @@ pub(crate) const BLOCKS: &[&str] = &[
     "mesh2",
     "polyhedron",
     "prism",
+    "text",
     "merge",
     "intersection",
     "difference",
@@ -77,7 +78,6 @@ const LATER_BLOCKS: &[&str] = &[
     "lathe",
     "sor",
     "superellipsoid",
-    "text",
     "sphere_sweep",
     "bicubic_patch",
     "irid",
@@ -141,7 +141,7 @@ impl Evaluator<'_> {
             "sphere" | "plane" | "box" | "triangle" | "union" | "object" | "cylinder" | "cone"
             | "torus" | "quadric" | "poly" | "cubic" | "quartic" | "disc" | "height_field"
             | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "polyhedron" | "prism"
-            | "merge" | "intersection" | "difference" => {
+            | "text" | "merge" | "intersection" | "difference" => {
                 Value::Object(std::sync::Arc::new(self.object(&mut c)?))
             }
             "clipped_by" | "bounded_by" | "vertex_vectors" | "normal_vectors" | "uv_vectors"

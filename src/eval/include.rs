@@ -181,7 +181,7 @@ impl Evaluator<'_> {
     /// `Ok(Some((canonical path, path as shown)))` when found inside the read
     /// sandbox, `Ok(None)` with the paths tried in `tried` when not found, and a
     /// `rts::io::file_not_allowed` error when found outside the sandbox.
-    fn search(
+    pub(crate) fn search(
         &self,
         name: &str,
         span: Span,

@@ -29,6 +29,7 @@ mod patterns;
 mod scope;
 mod shapes;
 mod spline;
+mod text;
 mod timeline;
 pub mod value;
 mod vocabulary;
@@ -195,6 +196,7 @@ pub fn eval_cached(
         parsed_includes: std::mem::take(&mut cache.parsed_includes),
         mesh_cache: std::mem::take(&mut cache.meshes),
         data_files: Default::default(),
+        fonts: Default::default(),
         coefficient_lists: false,
         defer_material_blocks: false,
     };
@@ -250,6 +252,8 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) parsed_includes: rustc_hash::FxHashMap<FileId, Option<std::rc::Rc<ast::File>>>,
     /// Meshes kept from earlier evaluations of the same scene.
     pub(crate) mesh_cache: mesh_cache::MeshCache,
+    /// Fonts read by `text` objects, by file.
+    pub(crate) fonts: text::FontCache,
     /// Data files found (for the animation manifest's scene hash).
     pub(crate) data_files: std::cell::RefCell<Vec<PathBuf>>,
     /// Set while the items of a `poly`, `cubic` or `quartic` block are read:

@@ -270,6 +270,7 @@ impl Evaluator<'_> {
             }
             "polyhedron" => self.polyhedron(c)?,
             "prism" => self.prism(c)?,
+            "text" => self.text(c)?,
             _ => return Ok(None),
         };
         Ok(Some(Object::new(shape, span)))

@@ -39,6 +39,7 @@ pub const TOP_LEVEL_KEYWORDS: &[&str] = &[
     "sky_sphere",
     "smooth_triangle",
     "sphere",
+    "text",
     "torus",
     "triangle",
     "union",
@@ -67,6 +68,7 @@ const OBJECTS: &[&str] = &[
     "quartic",
     "smooth_triangle",
     "sphere",
+    "text",
     "torus",
     "triangle",
     "union",
@@ -110,6 +112,7 @@ pub fn block_keywords(block: &str) -> Option<Vec<&'static str>> {
             v
         }
         "height_field" => vec!["png", "smooth", "water_level"],
+        "text" => super::text::TEXT_ITEMS.to_vec(),
         "clipped_by" | "bounded_by" => OBJECTS.to_vec(),
         "union" | "merge" | "intersection" | "difference" => OBJECTS.to_vec(),
         "looks_like" => OBJECTS.to_vec(),

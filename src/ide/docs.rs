@@ -1181,12 +1181,21 @@ pub const DOCS: &[Doc] = &[
         "superellipsoid { <E, N> }",
         "A superquadric ellipsoid.",
     ),
-    later(
+    kw(
         "text",
-        "text { ttf \"FONT\" \"TEXT\", DEPTH, OFFSET }",
-        "3-D text.",
+        "text { ttf \"FONT.ttf\" \"STRING\" THICKNESS, OFFSET … }",
+        "3-D text: the string's glyphs in the x-y plane, baseline on y = 0 from x = 0, 1 unit per em, extruded from z = 0 to z = THICKNESS; OFFSET <x, y> is added after each character. A solid (works in CSG).",
     ),
-    later("ttf", "ttf \"FONT\"", "A TrueType font file for text."),
+    kw(
+        "ttf",
+        "text { ttf \"FONT.ttf\" … }",
+        "The TrueType/OpenType font file of a text: searched in the scene's folders, -I folders, then POV-Ray's font folder (timrom.ttf, cyrvetic.ttf, crystal.ttf, povlogo.ttf); `.ttf` is added to a name without extension.",
+    ),
+    kw(
+        "internal",
+        "text { internal N … }",
+        "POV-Ray's built-in font N (0 povlogo, 1 timrom, 2 cyrvetic, 3 crystal), read from POV-Ray's installed font files.",
+    ),
     later(
         "sphere_sweep",
         "sphere_sweep { linear_spline N, … }",

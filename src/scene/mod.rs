@@ -23,7 +23,7 @@ pub use material::{
     PatternMods, PatternedTexture, Pigment, Reflection, Texture, TextureEntries, TextureMapEntries,
     Wave,
 };
-pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape};
+pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape, TextData};
 pub use path::{PathTracing, PixelFilter};
 pub use transform::Transform;
 

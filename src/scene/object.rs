@@ -189,6 +189,10 @@ pub enum Shape {
     },
     /// `mesh { … }` or `mesh2 { … }`: triangles shared by every copy.
     Mesh(Arc<MeshData>),
+    /// `text { ttf "FONT" "STRING" THICKNESS, OFFSET }`: glyph outlines in the x-y
+    /// plane, baseline on y = 0 from x = 0, extruded from z = 0 to z = THICKNESS;
+    /// a solid (the union of its glyphs).
+    Text(Arc<TextData>),
     /// `merge`, `intersection` or `difference` (a `union` is [`Shape::Union`]).
     Csg {
         /// Which operation.
@@ -196,6 +200,17 @@ pub enum Shape {
         /// The operands, in order.
         children: Vec<Object>,
     },
+}
+
+/// The glyphs of a `text` object.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct TextData {
+    /// Each glyph's outline as prism curves (`<x, −y>` in em units, the glyph's
+    /// origin at 0; see [`crate::build::shapes::text`]) and where its origin goes
+    /// in the x-y plane.
+    pub glyphs: Vec<(Arc<[[glam::DVec2; 4]]>, glam::DVec2)>,
+    /// The extrusion depth along z (negative: towards −z).
+    pub thickness: f64,
 }
 
 /// A CSG operation other than `union`.

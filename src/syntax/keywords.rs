@@ -96,6 +96,7 @@ pub const KEYWORDS: &[&str] = &[
     "image_map",
     "inside_vector",
     "interior",
+    "internal",
     "interpolate",
     "intersection",
     "inverse",

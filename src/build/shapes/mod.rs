@@ -7,6 +7,7 @@ pub mod prism;
 pub mod quadric;
 pub mod solid;
 pub mod surface;
+pub mod text;
 pub mod torus;
 
 /// The smallest distance `hits` reports (it calls its argument once per crossing).
