@@ -138,10 +138,7 @@ impl Evaluator<'_> {
             ))));
         }
         Ok(Some(match kw {
-            "sphere" | "plane" | "box" | "triangle" | "union" | "object" | "cylinder" | "cone"
-            | "torus" | "quadric" | "poly" | "cubic" | "quartic" | "disc" | "height_field"
-            | "smooth_triangle" | "polygon" | "mesh" | "mesh2" | "polyhedron" | "prism"
-            | "text" | "merge" | "intersection" | "difference" => {
+            kw if super::objects::OBJECT_BLOCKS.contains(&kw) => {
                 Value::Object(std::sync::Arc::new(self.object(&mut c)?))
             }
             "clipped_by" | "bounded_by" | "vertex_vectors" | "normal_vectors" | "uv_vectors"

@@ -60,6 +60,7 @@ pub(crate) const OBJECT_BLOCKS: &[&str] = &[
     "mesh2",
     "polyhedron",
     "prism",
+    "text",
     "merge",
     "intersection",
     "difference",
