@@ -1,38 +1,14 @@
 //! Dispatch from a block's keyword to the code that evaluates it.
 
 use super::cursor::{Cursor, Sink, Tok};
+use super::objects::OBJECT_BLOCKS;
 use super::value::Value;
 use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
 use crate::syntax::ast::Block;
 
-/// Blocks this release evaluates.
+/// Blocks this release evaluates besides the objects ([`OBJECT_BLOCKS`]).
 pub(crate) const BLOCKS: &[&str] = &[
-    "sphere",
-    "plane",
-    "box",
-    "triangle",
-    "union",
-    "object",
-    "cylinder",
-    "cone",
-    "height_field",
-    "torus",
-    "quadric",
-    "poly",
-    "cubic",
-    "quartic",
-    "disc",
-    "smooth_triangle",
-    "polygon",
-    "mesh",
-    "mesh2",
-    "polyhedron",
-    "prism",
-    "text",
-    "merge",
-    "intersection",
-    "difference",
     "clipped_by",
     "bounded_by",
     "vertex_vectors",
@@ -89,16 +65,21 @@ const LATER_BLOCKS: &[&str] = &[
     "light_group",
 ];
 
+/// Whether `k` opens a block this release evaluates.
+pub(crate) fn is_evaluated_block(k: &str) -> bool {
+    BLOCKS.contains(&k) || OBJECT_BLOCKS.contains(&k)
+}
+
 /// Whether `k` opens a block (`k { … }`).
 pub(crate) fn is_block_keyword(k: &str) -> bool {
-    BLOCKS.contains(&k) || LATER_BLOCKS.contains(&k)
+    is_evaluated_block(k) || LATER_BLOCKS.contains(&k)
 }
 
 impl Evaluator<'_> {
     /// Evaluates a block; `None` for blocks that only have effects (`global_settings`).
     pub(crate) fn block(&mut self, b: &Block) -> R<Option<Value>> {
         let kw = b.keyword.name;
-        if !BLOCKS.contains(&kw) {
+        if !is_evaluated_block(kw) {
             let d = if LATER_BLOCKS.contains(&kw) {
                 Diagnostic::error(
                     codes::UNSUPPORTED,
@@ -126,7 +107,7 @@ impl Evaluator<'_> {
         let mut toks = Sink::new();
         let lists = matches!(kw, "poly" | "cubic" | "quartic");
         let outer = std::mem::replace(&mut self.coefficient_lists, lists);
-        let defer = kw == "texture" || super::objects::OBJECT_BLOCKS.contains(&kw);
+        let defer = kw == "texture" || OBJECT_BLOCKS.contains(&kw);
         let outer_defer = std::mem::replace(&mut self.defer_material_blocks, defer);
         self.expand(&b.items, &mut toks);
         self.defer_material_blocks = outer_defer;
@@ -138,7 +119,7 @@ impl Evaluator<'_> {
             ))));
         }
         Ok(Some(match kw {
-            kw if super::objects::OBJECT_BLOCKS.contains(&kw) => {
+            kw if OBJECT_BLOCKS.contains(&kw) => {
                 Value::Object(std::sync::Arc::new(self.object(&mut c)?))
             }
             "clipped_by" | "bounded_by" | "vertex_vectors" | "normal_vectors" | "uv_vectors"

@@ -191,15 +191,11 @@ impl Evaluator<'_> {
                         Ok(())
                     }
                 }
-                Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => {
-                    self.transform_kw(kw, span, c).map(|t| {
-                        transform_light(&mut light, &t);
-                        transform = transform.then(&t);
-                    })
-                }
+                Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => self
+                    .transform_kw(kw, span, c)
+                    .map(|t| move_light(&mut light, &mut transform, &t)),
                 Tok::Block(_, Value::Transform(t), _) => {
-                    transform_light(&mut light, &t);
-                    transform = transform.then(&t);
+                    move_light(&mut light, &mut transform, &t);
                     Ok(())
                 }
                 Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_LIGHT.contains(&kw) => {
@@ -298,15 +294,11 @@ impl Evaluator<'_> {
         let mut transform = Transform::IDENTITY;
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
-                Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => {
-                    self.transform_kw(kw, span, c).map(|t| {
-                        transform_light(&mut light, &t);
-                        transform = transform.then(&t);
-                    })
-                }
+                Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => self
+                    .transform_kw(kw, span, c)
+                    .map(|t| move_light(&mut light, &mut transform, &t)),
                 Tok::Block(_, Value::Transform(t), _) => {
-                    transform_light(&mut light, &t);
-                    transform = transform.then(&t);
+                    move_light(&mut light, &mut transform, &t);
                     Ok(())
                 }
                 other => Err(self.unexpected(c, &other, TRANSFORMS)),
@@ -374,6 +366,13 @@ fn beam_from(written: &[Option<(f64, Span)>; 3], default: Beam) -> Beam {
         b.falloff = b.radius;
     }
     b
+}
+
+/// Moves `light` by `t` and appends `t` to `transform` (what its `looks_like`
+/// object is moved by at the end).
+fn move_light(light: &mut Light, transform: &mut Transform, t: &Transform) {
+    transform_light(light, t);
+    *transform = transform.then(t);
 }
 
 /// Moves a light's location, aim and area axes by `t`.

@@ -2,7 +2,7 @@
 //! editors use it to complete only what is valid where the cursor is.
 
 use super::atmosphere::{FOG_ITEMS, SKY_ITEMS};
-use super::blocks::BLOCKS;
+use super::blocks::is_evaluated_block;
 use super::camera::{CAMERA_ITEMS, GLOBAL_ITEMS};
 use super::lights::LIGHT_ITEMS;
 use super::materials::{
@@ -117,7 +117,7 @@ pub fn block_keywords(block: &str) -> Option<Vec<&'static str>> {
         "union" | "merge" | "intersection" | "difference" => OBJECTS.to_vec(),
         "looks_like" => OBJECTS.to_vec(),
         k if OBJECTS.contains(&k) => Vec::new(),
-        k if BLOCKS.contains(&k) => return None,
+        k if is_evaluated_block(k) => return None,
         _ => return None,
     };
     if OBJECTS.contains(&block) {

@@ -47,7 +47,9 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         Rule::kw_for => "`for`",
         Rule::kw_macro => "`macro`",
         Rule::kw_include => "`include`",
-        Rule::kw_default => "`default`",
+        // `default { … }` may stand without its `#` (as POV-Ray reads it), so the
+        // word alone opens a directive: name it so, not as a keyword to type.
+        Rule::kw_default => "a directive",
         Rule::kw_version => "`version`",
         Rule::expr
         | Rule::or_expr
