@@ -4,7 +4,7 @@ use super::value::{Value, Vector};
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
 use crate::span::Span;
-use glam::DMat3;
+use glam::{DMat3, DVec3};
 use std::rc::Rc;
 
 /// Names of the built-in constants (first) and functions, interned in this order so
@@ -71,6 +71,8 @@ pub const BUILTIN_NAMES: &[&str] = &[
     "vaxis_rotate",
     "vtransform",
     "vinv_transform",
+    "min_extent",
+    "max_extent",
     "seed",
     "rand",
     "str",
@@ -375,6 +377,18 @@ impl Evaluator<'_> {
                 };
                 Ok(Value::Vector(Vector::v3(m.transform_point3(p))))
             }
+            "min_extent" | "max_extent" => {
+                arity(1, 1)?;
+                let Value::Object(o) = &args[0].0 else {
+                    return Err(self.mismatch("an object", &args[0].0, args[0].1));
+                };
+                let (min, max) = object_extent(o);
+                Ok(Value::Vector(Vector::v3(if name == "min_extent" {
+                    min
+                } else {
+                    max
+                })))
+            }
             "seed" => {
                 arity(1, 1)?;
                 let s = f(0)?;
@@ -606,4 +620,28 @@ fn splitmix(mut z: u64) -> u64 {
     z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
     z ^ (z >> 31)
+}
+
+/// The corners of `object`'s bounding box, as `min_extent` and `max_extent` give
+/// them: the box the renderer's hierarchy would give it (CSG intersections are
+/// bounded by the overlap of their parts). As in POV-Ray, an object with an
+/// unbounded part (a plane) reaches ±10¹⁰; an empty one gives the origin.
+fn object_extent(object: &crate::scene::Object) -> (DVec3, DVec3) {
+    const HUGE: f64 = 1e10;
+    let scene = crate::scene::Scene {
+        objects: vec![object.clone()],
+        ..crate::scene::Scene::default()
+    };
+    let world = crate::build::build(&scene);
+    if !world.unbounded.is_empty() {
+        return (DVec3::splat(-HUGE), DVec3::splat(HUGE));
+    }
+    let b = world.bvh.bounds();
+    if b.min.cmpgt(b.max).any() {
+        return (DVec3::ZERO, DVec3::ZERO);
+    }
+    (
+        b.min.max(DVec3::splat(-HUGE)),
+        b.max.min(DVec3::splat(HUGE)),
+    )
 }

@@ -1333,6 +1333,16 @@ pub const DOCS: &[Doc] = &[
         "The point V moved by the inverse of TRANSFORM (as transforms.inc's vinv_transform).",
     ),
     func(
+        "min_extent",
+        "min_extent(OBJECT)",
+        "The lowest corner of the object's bounding box (±1e10 when unbounded).",
+    ),
+    func(
+        "max_extent",
+        "max_extent(OBJECT)",
+        "The highest corner of the object's bounding box (±1e10 when unbounded).",
+    ),
+    func(
         "seed",
         "seed(N)",
         "A random stream for rand, seeded with N.",
