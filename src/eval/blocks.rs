@@ -107,7 +107,9 @@ impl Evaluator<'_> {
         let mut toks = Sink::new();
         let lists = matches!(kw, "poly" | "cubic" | "quartic");
         let outer = std::mem::replace(&mut self.coefficient_lists, lists);
-        let defer = kw == "texture" || OBJECT_BLOCKS.contains(&kw);
+        // Texture bodies (also a texture_map's entries) and objects read a
+        // pigment, finish or normal as a change to the one in force.
+        let defer = matches!(kw, "texture" | "texture_map") || OBJECT_BLOCKS.contains(&kw);
         let outer_defer = std::mem::replace(&mut self.defer_material_blocks, defer);
         self.expand(&b.items, &mut toks);
         self.defer_material_blocks = outer_defer;

@@ -260,7 +260,8 @@ pub(crate) struct Evaluator<'a> {
     /// there, a vector of more than 5 numbers (other than a 12-number matrix) is
     /// a list of coefficients (a one-dimensional array).
     pub(crate) coefficient_lists: bool,
-    /// Set while the items of a texture or an object are read: there a
+    /// Set while the items of a texture (or a texture_map's entries) or an object
+    /// are read: there a
     /// `pigment`, `finish` or `normal` block modifies the one in force, as in
     /// POV-Ray, so it is kept unevaluated ([`cursor::Tok::Deferred`]) until the
     /// reader knows what it modifies (see `modify.rs`).

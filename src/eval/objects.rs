@@ -235,16 +235,24 @@ impl Evaluator<'_> {
         if tex.patterned.is_some() {
             return None;
         }
-        let mut world = tex.clone();
-        if obj.texture.is_some() {
-            if let Some(t) = obj.transform.as_deref() {
-                world.transform_patterns(t);
+        // The object's own texture lies in its frame (see `attach`).
+        let frame = obj.texture.as_ref().and(obj.transform.as_deref());
+        let moved = |pattern: &mut Option<Arc<Transform>>| {
+            if let Some(t) = frame {
+                crate::scene::compose(pattern, t);
             }
-        }
+        };
         match kw {
-            "pigment" => Some(Value::Pigment(Arc::new(world.pigment))),
-            "finish" => Some(Value::Finish(Arc::new(world.finish))),
-            _ => world.normal.map(|n| Value::Normal(Arc::new(n))),
+            "pigment" => {
+                let mut p = tex.pigment.clone();
+                moved(&mut p.transform);
+                Some(Value::Pigment(Arc::new(p)))
+            }
+            "finish" => Some(Value::Finish(Arc::new(tex.finish))),
+            _ => tex.normal.clone().map(|mut n| {
+                moved(&mut n.transform);
+                Value::Normal(Arc::new(n))
+            }),
         }
     }
 

@@ -265,9 +265,14 @@ impl Evaluator<'_> {
                     solid,
                 }) = &mut spec.kind
                 else {
+                    let span = c.last;
+                    // Its value is taken too, so it is not reported again.
+                    if kw != "solid" {
+                        c.value("a value")?;
+                    }
                     return Err(Diagnostic::error(
                         codes::UNKNOWN_PARAMETER,
-                        c.last,
+                        span,
                         format!("`{kw}` applies to the `crackle` pattern only"),
                     )
                     .with_help("write `crackle` before it")

@@ -261,7 +261,9 @@ impl Evaluator<'_> {
                     )
                     .into());
                 }
-                let mut points = Vec::with_capacity(n as usize);
+                // Not preallocated from the count: a huge count must end in a
+                // diagnostic (no point after the last one), not an allocation failure.
+                let mut points = Vec::new();
                 for _ in 0..n as usize {
                     c.comma();
                     points.push(self.take_vec3(c, "a polygon point")?);
@@ -422,7 +424,8 @@ impl Evaluator<'_> {
             .with_help(spline.closing_rule())
             .into());
         }
-        let mut points = Vec::with_capacity(n as usize);
+        // Not preallocated from the count, which may be anything the user wrote.
+        let mut points = Vec::new();
         let mut last = count_span;
         loop {
             if matches!(c.peek(), Some(Tok::Comma(_))) {

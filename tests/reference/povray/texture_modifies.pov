@@ -13,3 +13,5 @@ sphere { <1, 0, 0>, 0.45 texture { T pigment { P scale 0.5 } } }
 sphere { <-1, 1, 0>, 0.45 pigment { P } pigment { scale 0.3 } translate x*0.2 }
 sphere { <0, 1, 0>, 0.45 texture { T finish { } } }
 sphere { <1, 1, 0>, 0.45 texture { pigment { P } finish { ambient 1 } } pigment { rotate z*90 } }
+// The entries of a texture_map are texture bodies: the same rule holds there.
+sphere { <0, -0.9, 0>, 0.4 texture { gradient x texture_map { [0 T finish { diffuse 0.5 }] [1 T finish { diffuse 0.5 }] } } }
