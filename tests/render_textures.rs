@@ -203,3 +203,21 @@ fn path_tracer_picks_textures_by_pattern_and_blend_weight() {
         assert!((got[0] + got[1] - 1.0).abs() < 1e-4, "{x}: {got:?}");
     }
 }
+
+#[test]
+fn pigments_a_macro_writes_into_a_texture_read_its_parameters() {
+    // POV-Ray's Basic_Scenes templates: a macro whose body is a bare `pigment`
+    // used inside `texture { }`. The block modifies the texture's pigment, so it
+    // is read after the texture is complete, when the macro has returned; it
+    // must still see the macro's parameters and locals.
+    let scene = format!(
+        "{CAMERA}#macro Tint(C) #local Half = C / 2; pigment {{ rgb Half }} #end\n\
+         #macro Glow(A) finish {{ ambient A diffuse 0 }} #end\n\
+         box {{ <-2, -2, 0>, <0, 2, 1> texture {{ Tint(<0, 2, 0>) Glow(1) }} }}\n\
+         box {{ <0, -2, 0>, <2, 2, 1> Tint(<0, 0, 1.6>) Glow(0.5) }}\n"
+    );
+    let (w, px) = render("macro_pigments", &scene, 8, 8);
+    let at = |x: u32, y: u32| px[(y * w + x) as usize];
+    assert!(close(at(1, 4), [0.0, 1.0, 0.0], 1e-3), "{:?}", at(1, 4));
+    assert!(close(at(6, 4), [0.0, 0.0, 0.4], 1e-3), "{:?}", at(6, 4));
+}

@@ -23,7 +23,21 @@ pub(crate) enum Tok {
     Bracket(Vec<Tok>, Span),
     /// A `pigment`, `finish` or `normal` block written in a texture or an
     /// object, not evaluated yet: it modifies the one in force there.
-    Deferred(std::rc::Rc<crate::syntax::ast::Block>),
+    Deferred(std::rc::Rc<Deferred>),
+}
+
+/// A block kept for later evaluation (see [`Tok::Deferred`]), with what it can
+/// see where it is written: a macro's parameters and locals outlive the call
+/// that wrote the block into its caller's texture, and errors in it show the
+/// macro calls that led there.
+#[derive(Debug)]
+pub(crate) struct Deferred {
+    /// The block as written.
+    pub(crate) block: crate::syntax::ast::Block,
+    /// The local scopes (not the global one) in force where it is written.
+    pub(crate) locals: Vec<super::scope::Frame>,
+    /// The macro and include chain where it is written.
+    pub(crate) trace: Vec<crate::diag::Label>,
 }
 
 impl Tok {
@@ -35,7 +49,7 @@ impl Tok {
             | Tok::Comma(s)
             | Tok::Semi(s)
             | Tok::Bracket(_, s) => *s,
-            Tok::Deferred(b) => b.span,
+            Tok::Deferred(b) => b.block.span,
         }
     }
 
@@ -48,7 +62,7 @@ impl Tok {
             Tok::Comma(_) => "`,`".into(),
             Tok::Semi(_) => "`;`".into(),
             Tok::Bracket(..) => "`[ … ]`".into(),
-            Tok::Deferred(b) => format!("a `{}` block", b.keyword.name),
+            Tok::Deferred(b) => format!("a `{}` block", b.block.keyword.name),
         }
     }
 }

@@ -58,7 +58,11 @@ impl Evaluator<'_> {
                 if self.defer_material_blocks
                     && matches!(b.keyword.name, "pigment" | "finish" | "normal") =>
             {
-                out.push(Tok::Deferred(Rc::new((**b).clone())));
+                out.push(Tok::Deferred(Rc::new(super::cursor::Deferred {
+                    block: (**b).clone(),
+                    locals: self.scope.locals(),
+                    trace: self.trace.clone(),
+                })));
             }
             Item::Block(b) => match self.block(b) {
                 // `keyframes { }` stands for its value at the current time.

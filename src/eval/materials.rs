@@ -248,7 +248,7 @@ impl Evaluator<'_> {
                     let base = if pat.is_some() || declared_patterned {
                         None
                     } else {
-                        match b.keyword.name {
+                        match b.block.keyword.name {
                             "pigment" => Some(Value::Pigment(Arc::new(tex.pigment.clone()))),
                             "finish" => Some(Value::Finish(Arc::new(tex.finish))),
                             _ => tex.normal.clone().map(|n| Value::Normal(Arc::new(n))),

@@ -6,12 +6,11 @@
 //! [`Tok::Deferred`] while their texture or object is expanded, and evaluated here
 //! once the reader knows what they modify, so their items run exactly once.
 
-use super::cursor::{Cursor, Sink, Tok};
+use super::cursor::{Cursor, Deferred, Sink, Tok};
 use super::objects::TRANSFORMS;
 use super::patterns::MODIFIERS;
 use super::value::Value;
 use super::Evaluator;
-use crate::syntax::ast::Block;
 use std::sync::Arc;
 
 /// Whether a `kw` block whose first item is `first` modifies the one in force
@@ -36,15 +35,25 @@ fn modifies(kw: &str, first: Option<&Tok>) -> bool {
 }
 
 impl Evaluator<'_> {
-    /// Evaluates the deferred `pigment`, `finish` or `normal` block `b` as a
+    /// Evaluates the deferred `pigment`, `finish` or `normal` block `d` as a
     /// modification of `base` (the one in force where it is written; `None` when
     /// there is nothing to modify), giving the token an eager read would have.
-    pub(crate) fn undefer(&mut self, b: &Block, base: Option<Value>) -> Tok {
+    /// It sees the local names it saw where it was written (a macro's
+    /// parameters, though the macro has returned), and its errors show that
+    /// place's macro calls.
+    pub(crate) fn undefer(&mut self, d: &Deferred, base: Option<Value>) -> Tok {
+        let b = &d.block;
         let kw = b.keyword.name;
         let mut sink = Sink::new();
         // What is inside the block is not itself in a texture or object.
         let outer = std::mem::replace(&mut self.defer_material_blocks, false);
+        let trace = std::mem::replace(&mut self.trace, d.trace.clone());
+        self.scope.reopen(&d.locals);
         self.expand(&b.items, &mut sink);
+        for _ in &d.locals {
+            self.scope.pop();
+        }
+        self.trace = trace;
         self.defer_material_blocks = outer;
         let mut toks = sink.toks;
         if let Some(base) = base {

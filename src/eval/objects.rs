@@ -268,7 +268,7 @@ impl Evaluator<'_> {
     fn modifier(&mut self, obj: &mut Object, c: &mut Cursor, tok: Tok, is_union: bool) -> R<()> {
         let tok = match tok {
             Tok::Deferred(b) => {
-                let base = self.material_base(obj, b.keyword.name);
+                let base = self.material_base(obj, b.block.keyword.name);
                 self.undefer(&b, base)
             }
             t => t,

@@ -25,9 +25,12 @@ impl Binding {
     }
 }
 
+/// One scope's bindings.
+pub(crate) type Frame = FxHashMap<Sym, Binding>;
+
 /// The stack of scopes; index 0 is global.
 pub(crate) struct Scopes {
-    frames: Vec<FxHashMap<Sym, Binding>>,
+    frames: Vec<Frame>,
 }
 
 impl Scopes {
@@ -114,6 +117,17 @@ impl Scopes {
     /// Opens a local scope.
     pub(crate) fn push(&mut self) {
         self.frames.push(FxHashMap::default());
+    }
+
+    /// Copies of the local scopes (all but the global one), innermost last.
+    pub(crate) fn locals(&self) -> Vec<Frame> {
+        self.frames[1..].to_vec()
+    }
+
+    /// Opens the local scopes `frames` (as [`Scopes::locals`] gave them) above
+    /// the current ones; [`Scopes::pop`] each to close them.
+    pub(crate) fn reopen(&mut self, frames: &[Frame]) {
+        self.frames.extend(frames.iter().cloned());
     }
 
     /// Closes the innermost local scope.
