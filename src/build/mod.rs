@@ -44,6 +44,8 @@ pub enum RayKind {
     Reflected,
     /// A shadow ray: `no_shadow` objects are invisible.
     Shadow,
+    /// A probe from the scene language (`trace`): every object is seen.
+    Probe,
 }
 
 impl RayKind {
@@ -54,6 +56,7 @@ impl RayKind {
             RayKind::Camera => !flags.no_image,
             RayKind::Reflected => !flags.no_reflection,
             RayKind::Shadow => !flags.no_shadow,
+            RayKind::Probe => true,
         }
     }
 }

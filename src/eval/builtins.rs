@@ -4,7 +4,7 @@ use super::value::{Value, Vector};
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
 use crate::span::Span;
-use glam::{DMat3, DVec3};
+use glam::DMat3;
 use std::rc::Rc;
 
 /// Names of the built-in constants (first) and functions, interned in this order so
@@ -94,6 +94,7 @@ pub const BUILTIN_NAMES: &[&str] = &[
     "bitwise_and",
     "bitwise_or",
     "bitwise_xor",
+    "trace",
 ];
 
 /// How many of [`BUILTIN_NAMES`] are constants.
@@ -382,7 +383,7 @@ impl Evaluator<'_> {
                 let Value::Object(o) = &args[0].0 else {
                     return Err(self.mismatch("an object", &args[0].0, args[0].1));
                 };
-                let (min, max) = object_extent(o);
+                let (min, max) = self.object_extent(&o.clone());
                 Ok(Value::Vector(Vector::v3(if name == "min_extent" {
                     min
                 } else {
@@ -584,6 +585,7 @@ pub fn signature(name: &str) -> String {
         "substr" => "substr(S, START, LENGTH)".into(),
         "dimension_size" => "dimension_size(ARRAY, DIMENSION)".into(),
         "defined" => "defined(NAME)".into(),
+        "trace" => "trace(OBJECT, START, DIRECTION [, NORMAL])".into(),
         "bitwise_and" | "bitwise_or" | "bitwise_xor" => format!("{name}(A, B, …)"),
         _ => format!("{name}(A)"),
     }
@@ -620,28 +622,4 @@ fn splitmix(mut z: u64) -> u64 {
     z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
     z ^ (z >> 31)
-}
-
-/// The corners of `object`'s bounding box, as `min_extent` and `max_extent` give
-/// them: the box the renderer's hierarchy would give it (CSG intersections are
-/// bounded by the overlap of their parts). As in POV-Ray, an object with an
-/// unbounded part (a plane) reaches ±10¹⁰; an empty one gives the origin.
-fn object_extent(object: &crate::scene::Object) -> (DVec3, DVec3) {
-    const HUGE: f64 = 1e10;
-    let scene = crate::scene::Scene {
-        objects: vec![object.clone()],
-        ..crate::scene::Scene::default()
-    };
-    let world = crate::build::build(&scene);
-    if !world.unbounded.is_empty() {
-        return (DVec3::splat(-HUGE), DVec3::splat(HUGE));
-    }
-    let b = world.bvh.bounds();
-    if b.min.cmpgt(b.max).any() {
-        return (DVec3::ZERO, DVec3::ZERO);
-    }
-    (
-        b.min.max(DVec3::splat(-HUGE)),
-        b.max.min(DVec3::splat(HUGE)),
-    )
 }

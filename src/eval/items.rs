@@ -303,8 +303,10 @@ impl Evaluator<'_> {
         span: Span,
     ) -> R<Value> {
         if name.is_builtin() && builtins::is_function(name.0 as usize) {
-            if builtins::BUILTIN_NAMES[name.0 as usize] == "defined" {
-                return self.defined(args, span);
+            match builtins::BUILTIN_NAMES[name.0 as usize] {
+                "defined" => return self.defined(args, span),
+                "trace" => return self.trace_call(args, span),
+                _ => {}
             }
             let mut vals = Vec::with_capacity(args.len());
             for a in args {

@@ -31,6 +31,7 @@ mod shapes;
 mod spline;
 mod text;
 mod timeline;
+mod trace;
 pub mod value;
 mod vocabulary;
 
@@ -199,6 +200,7 @@ pub fn eval_cached(
         fonts: Default::default(),
         coefficient_lists: false,
         defer_material_blocks: false,
+        built_objects: Default::default(),
     };
     ev.define_command_line();
     ev.run_top(&file.items);
@@ -266,6 +268,8 @@ pub(crate) struct Evaluator<'a> {
     /// POV-Ray, so it is kept unevaluated ([`cursor::Tok::Deferred`]) until the
     /// reader knows what it modifies (see `modify.rs`).
     pub(crate) defer_material_blocks: bool,
+    /// Objects built for `trace`, `min_extent` and `max_extent`.
+    pub(crate) built_objects: trace::BuiltObjects,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps

@@ -1396,6 +1396,11 @@ pub const DOCS: &[Doc] = &[
         "bitwise_xor(A, B, …)",
         "Bitwise exclusive or of integers.",
     ),
+    func(
+        "trace",
+        "trace(OBJECT, START, DIRECTION [, NORMAL])",
+        "Where the ray from START along DIRECTION first meets OBJECT (<0, 0, 0> on a miss); NORMAL, a name, receives the normal there.",
+    ),
 ];
 
 /// The documentation of `word` as a keyword, function or constant (not a directive).
