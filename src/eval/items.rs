@@ -276,6 +276,24 @@ impl Evaluator<'_> {
                 }
             });
         }
+        // As in POV-Ray, a parameter given a declared name stands for that
+        // identifier: what the macro assigns to the parameter (`#local X = …` or
+        // `#declare X = …`) is the identifier's value after the call. Here the
+        // final value is copied back when the macro returns.
+        let by_reference: Vec<(Sym, Sym, usize, Span)> = m
+            .params
+            .iter()
+            .zip(args)
+            .filter_map(|(p, a)| match a {
+                Arg::Expr(e) => match &e.kind {
+                    ExprKind::Ident(n) if !n.is_builtin() => {
+                        self.scope.frame_of(*n).map(|f| (p.name, *n, f, e.span))
+                    }
+                    _ => None,
+                },
+                _ => None,
+            })
+            .collect();
         self.scope.push();
         for (p, (v, a)) in m.params.iter().zip(values.into_iter().zip(args)) {
             if let Some(v) = v {
@@ -290,7 +308,14 @@ impl Evaluator<'_> {
         self.expand(&m.body, out);
         self.trace.pop();
         self.macro_depth -= 1;
-        self.scope.pop();
+        let mut frame = self.scope.take_top();
+        for (param, name, at, given) in by_reference {
+            // Only a parameter the macro assigned to (its binding no longer
+            // the argument's): the identifier may have been changed by name.
+            if let Some(b) = frame.remove(&param).filter(|b| b.span != given) {
+                self.scope.set_in(at, name, b.value);
+            }
+        }
         Ok(())
     }
 

@@ -130,6 +130,29 @@ impl Scopes {
         self.frames.extend(frames.iter().cloned());
     }
 
+    /// The index of the scope `name` is found in (innermost first).
+    pub(crate) fn frame_of(&self, name: Sym) -> Option<usize> {
+        self.frames.iter().rposition(|f| f.contains_key(&name))
+    }
+
+    /// Gives `name` in scope `frame` the value `value`, if it is still bound
+    /// there (see [`Scopes::frame_of`]).
+    pub(crate) fn set_in(&mut self, frame: usize, name: Sym, value: Value) {
+        if let Some(b) = self.frames.get_mut(frame).and_then(|f| f.get_mut(&name)) {
+            b.value = value;
+        }
+    }
+
+    /// Closes the innermost local scope and gives its bindings (an empty table
+    /// for the global scope, which stays).
+    pub(crate) fn take_top(&mut self) -> Frame {
+        if self.frames.len() > 1 {
+            self.frames.pop().unwrap_or_default()
+        } else {
+            Frame::default()
+        }
+    }
+
     /// Closes the innermost local scope.
     pub(crate) fn pop(&mut self) {
         if self.frames.len() > 1 {
