@@ -172,8 +172,8 @@ impl Evaluator<'_> {
     /// `sor { N, <r, h>… }` (`open` and `sturm` after the points are object
     /// modifiers).
     pub(crate) fn sor(&mut self, c: &mut Cursor) -> R<Shape> {
-        const RULE: &str = "the first and last points are control points; the heights must \
-                            rise from the first point to the last but one";
+        const RULE: &str = "the first and last points are control points; the heights of the \
+                            points between them must rise";
         if let Some(Tok::Kw("sturm", _)) = c.peek() {
             c.next();
         }
@@ -210,7 +210,7 @@ impl Evaluator<'_> {
             }
         }
         let m = points.len();
-        for i in 1..m - 1 {
+        for i in 2..m - 1 {
             let ((a, sa), (b, sb)) = (points[i - 1], points[i]);
             if b.y <= a.y {
                 return Err(Diagnostic::error(
@@ -230,21 +230,26 @@ impl Evaluator<'_> {
                 .into());
             }
         }
-        let ((a, sa), (b, sb)) = (points[m - 3], points[m - 1]);
-        if a.y == b.y {
-            return Err(Diagnostic::error(
-                codes::OUT_OF_RANGE,
-                sb,
-                format!(
-                    "the last point of a sor sets the slope at the top, and its height {} is the \
-                     height of the third point from the end",
-                    b.y
-                ),
-            )
-            .with_label("same height")
-            .with_secondary(sa, "third point from the end")
-            .with_help("give the last (control) point another height, usually above the one before")
-            .into());
+        // The control points set the slopes at the ends: secants over two points.
+        for (ctrl, other, end) in [(0, 2, "bottom"), (m - 1, m - 3, "top")] {
+            let ((a, sa), (b, sb)) = (points[other], points[ctrl]);
+            if a.y == b.y {
+                return Err(Diagnostic::error(
+                    codes::OUT_OF_RANGE,
+                    sb,
+                    format!(
+                        "control point {} of this sor sets the slope at the {end}, and its height {} \
+                         is the height of point {}",
+                        ctrl + 1,
+                        b.y,
+                        other + 1
+                    ),
+                )
+                .with_label("same height")
+                .with_secondary(sa, "same height")
+                .with_help("give the control point another height (usually below the first or above the last but one)")
+                .into());
+            }
         }
         Ok(Shape::Sor {
             points: points.iter().map(|q| q.0).collect(),
