@@ -44,7 +44,11 @@ pub fn roots_in(p: &[f64], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -> usi
         Some(d) => d.min(MAX_DEGREE),
         None => return 0,
     };
-    if !(lo <= hi) {
+    // Also rejects NaN bounds.
+    if lo
+        .partial_cmp(&hi)
+        .is_none_or(|o| o == std::cmp::Ordering::Greater)
+    {
         return 0;
     }
     let inside = |x: f64| x >= lo && x <= hi;

@@ -10,10 +10,13 @@ fn radius_at(l: &Lathe, y: f64) -> f64 {
     5.0 - l.nearest(&ray, 0.0, f64::INFINITY).unwrap().0
 }
 
+/// A spline, its points and `(height, radius)` pairs POV-Ray's `trace()` found.
+type Case<'a> = (Spline, &'a [DVec2], &'a [(f64, f64)]);
+
 #[test]
 fn every_spline_matches_povray_trace() {
     let p = pts(&[(0.0, -1.0), (1.0, 0.0), (2.0, 1.0), (1.0, 2.0), (0.0, 3.0)]);
-    let cases: [(Spline, &[DVec2], &[(f64, f64)]); 4] = [
+    let cases: [Case; 4] = [
         (Spline::Linear, &p[1..4], &[(0.5, 1.5), (1.5, 1.5)]),
         (
             Spline::Quadratic,
