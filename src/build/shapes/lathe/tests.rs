@@ -128,3 +128,23 @@ fn normals_point_out_of_the_solid() {
     let b = l.bounds();
     assert!((b.max.x - 2.0).abs() < 1e-6 && (b.min.y).abs() < 1e-6 && (b.max.y - 2.0).abs() < 1e-6);
 }
+
+#[test]
+fn the_smallest_radius_is_the_curves_not_the_points() {
+    // POV-Ray 3.7's inside(): the parabola dips to x = 0.875 between points at x = 1,
+    // and a point at 0.9 inside that dip is inside; control points do not count.
+    let q = Lathe::new(&segments(
+        Spline::Quadratic,
+        &pts(&[(2.0, -1.0), (1.0, 0.0), (1.0, 1.0), (2.0, 2.0)]),
+    ));
+    assert!(q.inside(DVec3::new(0.9, 0.2, 0.0)));
+    assert!(!q.inside(DVec3::new(0.95, 0.2, 0.0)));
+    assert!(!q.inside(DVec3::new(0.88, 0.5, 0.0)));
+    let q2 = Lathe::new(&segments(
+        Spline::Quadratic,
+        &pts(&[(0.5, -1.0), (1.0, 0.0), (1.5, 1.0), (1.5, 2.0)]),
+    ));
+    for r in [0.3, 0.5, 0.7, 0.9] {
+        assert!(!q2.inside(DVec3::new(r, 0.3, 0.0)), "{r}");
+    }
+}
