@@ -492,6 +492,12 @@ impl Builder {
             } => PrimShape::Prism(Arc::new(shapes::prism::Prism::new(
                 curves, heights[0], heights[1], *conic, *open,
             ))),
+            Shape::Lathe { curves } => {
+                PrimShape::Lathe(Arc::new(shapes::lathe::Lathe::new(curves)))
+            }
+            Shape::Sor { points, open } => {
+                PrimShape::Sor(Arc::new(shapes::sor::Sor::new(points, *open)))
+            }
             Shape::Mesh(m) => PrimShape::Mesh(self.mesh(m)),
             Shape::Union { .. } | Shape::Csg { .. } | Shape::Text(_) => empty(),
         };

@@ -3,9 +3,11 @@
 use super::csg::Csg;
 use super::mesh::MeshAccel;
 use super::shapes::flat::{self, Polygon};
+use super::shapes::lathe::Lathe;
 use super::shapes::poly::Poly;
 use super::shapes::prism::Prism;
 use super::shapes::quadric::Frustum;
+use super::shapes::sor::Sor;
 use super::shapes::surface::Quadric;
 use super::shapes::{solid, torus};
 use super::{Aabb, Ray};
@@ -93,6 +95,10 @@ pub enum PrimShape {
     Polyhedron(Arc<[(DVec3, f64)]>),
     /// A `prism`.
     Prism(Arc<Prism>),
+    /// A `lathe`.
+    Lathe(Arc<Lathe>),
+    /// A `sor`.
+    Sor(Arc<Sor>),
     /// An instance of a shared mesh.
     Mesh(Arc<MeshAccel>),
     /// `merge`, `intersection`, `difference` or a clipped object.
@@ -130,7 +136,8 @@ pub struct Hit {
     pub leaf: u32,
     /// Which part of the shape: the triangle of a mesh, the face of a polyhedron,
     /// side (0) or end cap (1 base, 2 cap) of a cylinder or cone, bottom (0) or top
-    /// (1) cap or wall segment (2 + index) of a prism; else 0.
+    /// (1) cap or wall segment (2 + index) of a prism or sor, the segment of a
+    /// lathe; else 0.
     pub sub: u32,
 }
 
@@ -232,6 +239,8 @@ impl PrimShape {
             PrimShape::Poly(q) => q.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
             PrimShape::Mesh(m) => m.intersect(ray, t_min, t_max).map(|(t, i)| (t, 0, i)),
             PrimShape::Prism(p) => p.nearest(ray, t_min, t_max).map(|(t, sub)| (t, 0, sub)),
+            PrimShape::Lathe(l) => l.nearest(ray, t_min, t_max).map(|(t, sub)| (t, 0, sub)),
+            PrimShape::Sor(s) => s.nearest(ray, t_min, t_max).map(|(t, sub)| (t, 0, sub)),
             PrimShape::Csg(c) => c.intersect(ray, t_min, t_max),
             PrimShape::Frustum(_) | PrimShape::Torus { .. } => {
                 let mut best: Option<ShapeHit> = None;
@@ -278,6 +287,8 @@ impl PrimShape {
             }
             PrimShape::Mesh(m) => m.hits(ray, t_min, t_max, f),
             PrimShape::Prism(p) => p.hits(ray, t_min, t_max, f),
+            PrimShape::Lathe(l) => l.hits(ray, t_min, t_max, f),
+            PrimShape::Sor(s) => s.hits(ray, t_min, t_max, f),
             PrimShape::Quadric(q) => q.hits(ray, t_min, t_max, &mut |t| f(t, 0)),
             PrimShape::Poly(q) => q.hits(ray, t_min, t_max, &mut |t| f(t, 0)),
             _ => {
@@ -305,6 +316,8 @@ impl PrimShape {
             PrimShape::Polyhedron(planes) => planes.get(sub as usize).map_or(DVec3::Y, |pl| pl.0),
             PrimShape::Mesh(m) => m.normal(sub),
             PrimShape::Prism(pr) => pr.normal(p, sub),
+            PrimShape::Lathe(l) => l.normal(p, sub),
+            PrimShape::Sor(s) => s.normal(p, sub),
             PrimShape::Csg(_) => DVec3::Y,
         }
     }
@@ -355,6 +368,8 @@ impl PrimShape {
             PrimShape::Poly(q) => q.inside(p),
             PrimShape::Mesh(m) => m.inside(p),
             PrimShape::Prism(pr) => pr.inside(p),
+            PrimShape::Lathe(l) => l.inside(p),
+            PrimShape::Sor(s) => s.inside(p),
             PrimShape::Csg(c) => c.inside(p),
             PrimShape::Triangle { .. }
             | PrimShape::SmoothTriangle(_)
@@ -390,6 +405,8 @@ impl PrimShape {
             PrimShape::Polyhedron(planes) => polyhedron_bounds(planes)?,
             PrimShape::Mesh(m) => m.bounds(),
             PrimShape::Prism(p) => p.bounds(),
+            PrimShape::Lathe(l) => l.bounds(),
+            PrimShape::Sor(s) => s.bounds(),
             PrimShape::Csg(c) => return c.bounds(),
         })
     }

@@ -51,8 +51,6 @@ const LATER_BLOCKS: &[&str] = &[
     "blob",
     "isosurface",
     "julia_fractal",
-    "lathe",
-    "sor",
     "superellipsoid",
     "sphere_sweep",
     "bicubic_patch",

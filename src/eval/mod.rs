@@ -26,6 +26,7 @@ mod modify;
 mod objects;
 mod path_tracing;
 mod patterns;
+mod revolve;
 mod scope;
 mod shapes;
 mod spline;

@@ -60,6 +60,8 @@ pub(crate) const OBJECT_BLOCKS: &[&str] = &[
     "mesh2",
     "polyhedron",
     "prism",
+    "lathe",
+    "sor",
     "text",
     "merge",
     "intersection",
@@ -371,12 +373,16 @@ impl Evaluator<'_> {
             Tok::Kw("open", _)
                 if matches!(
                     obj.shape,
-                    Shape::Cylinder { .. } | Shape::Cone { .. } | Shape::Prism { .. }
+                    Shape::Cylinder { .. }
+                        | Shape::Cone { .. }
+                        | Shape::Prism { .. }
+                        | Shape::Sor { .. }
                 ) =>
             {
                 if let Shape::Cylinder { open, .. }
                 | Shape::Cone { open, .. }
-                | Shape::Prism { open, .. } = &mut obj.shape
+                | Shape::Prism { open, .. }
+                | Shape::Sor { open, .. } = &mut obj.shape
                 {
                     *open = true;
                 }

@@ -272,6 +272,8 @@ impl Evaluator<'_> {
             }
             "polyhedron" => self.polyhedron(c)?,
             "prism" => self.prism(c)?,
+            "lathe" => self.lathe(c)?,
+            "sor" => self.sor(c)?,
             "text" => self.text(c)?,
             _ => return Ok(None),
         };
@@ -424,51 +426,15 @@ impl Evaluator<'_> {
             .with_help(spline.closing_rule())
             .into());
         }
-        // Not preallocated from the count, which may be anything the user wrote.
-        let mut points = Vec::new();
-        let mut last = count_span;
-        loop {
-            if matches!(c.peek(), Some(Tok::Comma(_))) {
-                c.next();
-            }
-            if !c.value_next() {
-                break;
-            }
-            let (v, s) = c.value("a prism point")?;
-            last = s;
-            points.push(match &v {
-                Value::Float(f) => glam::DVec2::splat(*f),
-                Value::Vector(x) if x.len == 2 => glam::DVec2::new(x.c[0], x.c[1]),
-                Value::Vector(x) => {
-                    return Err(Diagnostic::error(
-                        codes::TYPE_MISMATCH,
-                        s,
-                        format!(
-                            "a prism point is 2-D `<u, v>`, found a vector of {} components",
-                            x.len
-                        ),
-                    )
-                    .with_label("not 2-D")
-                    .with_help("write `<x, z>`: the outline lies in the x-z plane and y is swept")
-                    .into())
-                }
-                other => return Err(self.mismatch("a 2-D point `<u, v>`", other, s)),
-            });
-        }
-        if points.len() != n as usize {
-            return Err(Diagnostic::error(
-                codes::INVALID_SIZE,
-                count_span,
-                format!("this prism says {n} points but lists {}", points.len()),
-            )
-            .with_label("count does not match")
-            .with_secondary(last, "the last point")
-            .with_help(format!(
-                "make the count {}, or list {n} points",
-                points.len()
-            ))
-            .into());
-        }
+        let listed = self.points_2d(
+            c,
+            n,
+            count_span,
+            "prism",
+            "write `<x, z>`: the outline lies in the x-z plane and y is swept",
+        )?;
+        let last = listed.last().map_or(count_span, |p| p.1);
+        let points: Vec<glam::DVec2> = listed.iter().map(|p| p.0).collect();
         let (curves, tail) = outline(spline, &points);
         let head = c.span.head();
         match tail {

@@ -312,7 +312,7 @@ pub const DOCS: &[Doc] = &[
     kw(
         "sturm",
         "sturm",
-        "Accepted on poly, cubic, quartic, torus and prism: rts's root solvers are always the careful ones.",
+        "Accepted on poly, cubic, quartic, torus, prism, lathe and sor: rts's root solvers are always the careful ones.",
     ),
     kw(
         "mesh",
@@ -392,7 +392,7 @@ pub const DOCS: &[Doc] = &[
     kw(
         "open",
         "open",
-        "Leaves out the end caps of a cylinder, cone or prism.",
+        "Leaves out the end caps of a cylinder, cone, prism or sor.",
     ),
     kw("no_shadow", "no_shadow", "The object casts no shadows."),
     kw(
@@ -1155,10 +1155,10 @@ pub const DOCS: &[Doc] = &[
         "julia_fractal { … }",
         "A 4-D Julia fractal.",
     ),
-    later(
+    kw(
         "lathe",
-        "lathe { N, POINTS … }",
-        "A surface of revolution of a spline.",
+        "lathe { [SPLINE] N, <x,y>… [sturm] … }",
+        "A 2-D spline in the x-y plane (x the radius, y the height) revolved around the y axis; SPLINE is linear_spline (default), quadratic_spline, cubic_spline or bezier_spline.",
     ),
     kw(
         "prism",
@@ -1175,7 +1175,11 @@ pub const DOCS: &[Doc] = &[
         "prism { conic_sweep … }",
         "Prism sweep: the outline is scaled by y, from a point at the origin to full size at y = 1.",
     ),
-    later("sor", "sor { N, POINTS … }", "A surface of revolution."),
+    kw(
+        "sor",
+        "sor { N, <r,h>… [open] [sturm] … }",
+        "A surface of revolution around y: r² is a cubic spline over the height through the points (the first and last are control points), with flat end caps unless open.",
+    ),
     later(
         "superellipsoid",
         "superellipsoid { <E, N> }",

@@ -187,6 +187,21 @@ pub enum Shape {
         /// `open`: no caps (inside tests still see a solid, as in POV-Ray).
         open: bool,
     },
+    /// `lathe { [SPLINE] N, <x, y>… }`: a spline in the x-y plane revolved around
+    /// the y axis.
+    Lathe {
+        /// The spline's segments, each `c0 + c1 s + c2 s² + c3 s³` for `s ∈ [0, 1]`
+        /// as `<x, y>` (see [`crate::build::shapes::lathe::segments`]).
+        curves: Arc<[[glam::DVec2; 4]]>,
+    },
+    /// `sor { N, <r, h>… [open] }`: a surface of revolution around y whose
+    /// squared radius is a cubic spline over the height.
+    Sor {
+        /// The points `<r, h>` as written (checked: at least 4, heights rising).
+        points: Arc<[glam::DVec2]>,
+        /// `open`: no end caps (inside tests still see a solid, as in POV-Ray).
+        open: bool,
+    },
     /// `mesh { … }` or `mesh2 { … }`: triangles shared by every copy.
     Mesh(Arc<MeshData>),
     /// `text { ttf "FONT" "STRING" THICKNESS, OFFSET }`: glyph outlines in the x-y

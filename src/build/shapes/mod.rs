@@ -2,10 +2,13 @@
 //! shape's own space. One file per family; [`super::PrimShape`] dispatches.
 
 pub mod flat;
+pub mod lathe;
 pub mod poly;
 pub mod prism;
 pub mod quadric;
+pub mod revolve;
 pub mod solid;
+pub mod sor;
 pub mod surface;
 pub mod text;
 pub mod torus;

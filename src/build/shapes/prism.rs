@@ -189,18 +189,18 @@ fn same(a: DVec2, b: DVec2) -> bool {
     (a - b).abs().max_element() <= 1e-10 * (1.0 + a.abs().max_element())
 }
 
-fn line(a: DVec2, b: DVec2) -> Curve {
+pub(crate) fn line(a: DVec2, b: DVec2) -> Curve {
     [a, b - a, DVec2::ZERO, DVec2::ZERO]
 }
 
 /// From `p2` to `p3` along the parabola through `p1`, `p2`, `p3` (at s = −1, 0, 1;
 /// measured against POV-Ray's pictures).
-fn quadratic(p1: DVec2, p2: DVec2, p3: DVec2) -> Curve {
+pub(crate) fn quadratic(p1: DVec2, p2: DVec2, p3: DVec2) -> Curve {
     [p2, (p3 - p1) * 0.5, (p1 - 2.0 * p2 + p3) * 0.5, DVec2::ZERO]
 }
 
 /// The Catmull-Rom segment from `p2` to `p3`.
-fn catmull_rom(p1: DVec2, p2: DVec2, p3: DVec2, p4: DVec2) -> Curve {
+pub(crate) fn catmull_rom(p1: DVec2, p2: DVec2, p3: DVec2, p4: DVec2) -> Curve {
     [
         p2,
         (p3 - p1) * 0.5,
@@ -210,7 +210,7 @@ fn catmull_rom(p1: DVec2, p2: DVec2, p3: DVec2, p4: DVec2) -> Curve {
 }
 
 /// The cubic Bézier segment with end points `a`, `d` and controls `b`, `c`.
-fn bezier(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Curve {
+pub(crate) fn bezier(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Curve {
     [
         a,
         3.0 * (b - a),
@@ -221,13 +221,13 @@ fn bezier(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Curve {
 
 /// The point of curve `c` at `s`.
 #[inline]
-fn at(c: &Curve, s: f64) -> DVec2 {
+pub(crate) fn at(c: &Curve, s: f64) -> DVec2 {
     ((c[3] * s + c[2]) * s + c[1]) * s + c[0]
 }
 
 /// The tangent of curve `c` at `s`.
 #[inline]
-fn tangent(c: &Curve, s: f64) -> DVec2 {
+pub(crate) fn tangent(c: &Curve, s: f64) -> DVec2 {
     (c[3] * (3.0 * s) + c[2] * 2.0) * s + c[1]
 }
 
@@ -502,7 +502,7 @@ impl Prism {
 }
 
 /// The exact 2-D bounds of a segment: its end points and the extrema inside.
-fn curve_box(c: &Curve) -> (DVec2, DVec2) {
+pub(crate) fn curve_box(c: &Curve) -> (DVec2, DVec2) {
     let mut lo = at(c, 0.0).min(at(c, 1.0));
     let mut hi = at(c, 0.0).max(at(c, 1.0));
     for axis in 0..2 {
@@ -523,7 +523,7 @@ fn curve_box(c: &Curve) -> (DVec2, DVec2) {
 /// How many times curve `c` crosses the half-line from `q` towards +x: sign
 /// changes of `z(s) − q.z` (zero counts as positive, so a curve touching the
 /// line at a joint is counted once over the two segments that meet there).
-fn crossings(c: &Curve, q: DVec2) -> u32 {
+pub(crate) fn crossings(c: &Curve, q: DVec2) -> u32 {
     let f = |s: f64| at(c, s).y - q.y >= 0.0;
     let k = [c[0].y - q.y, c[1].y, c[2].y, c[3].y];
     let mut r = [0.0; 3];
@@ -562,7 +562,7 @@ fn crossings(c: &Curve, q: DVec2) -> u32 {
 /// The parameter of the point of `c` nearest to `q` (a point on the curve or
 /// close to it): among the solutions of `x(s) = q.x` and `z(s) = q.z` and the
 /// ends, the one closest to `q`.
-fn closest(c: &Curve, q: DVec2) -> f64 {
+pub(crate) fn closest(c: &Curve, q: DVec2) -> f64 {
     let mut best = (f64::INFINITY, 0.0);
     let mut try_s = |s: f64| {
         let s = s.clamp(0.0, 1.0);
@@ -587,7 +587,7 @@ fn closest(c: &Curve, q: DVec2) -> f64 {
 /// Real roots in `[0, 1]` (a hair of slack, clamped) of the cubic
 /// `k[0] + k[1] s + k[2] s² + k[3] s³`; returns how many. Leading coefficients
 /// negligible on `[0, 1]` (below 1e-12 of the largest) are dropped.
-fn roots01(k: [f64; 4], out: &mut [f64; 3]) -> usize {
+pub(crate) fn roots01(k: [f64; 4], out: &mut [f64; 3]) -> usize {
     let scale = k.iter().fold(0.0f64, |m, c| m.max(c.abs()));
     if scale == 0.0 || !scale.is_finite() {
         return 0;
