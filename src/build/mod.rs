@@ -490,6 +490,13 @@ impl Builder {
                 curves, heights[0], heights[1], *conic, *open,
             ))),
             Shape::Mesh(m) => PrimShape::Mesh(self.mesh(m)),
+            Shape::Blob(data) => PrimShape::Blob(Arc::new(shapes::blob::Blob::new(
+                data,
+                world_from_obj.as_ref(),
+            ))),
+            Shape::Superellipsoid { e, n } => {
+                PrimShape::Superellipsoid(shapes::superellipsoid::Superellipsoid::new(*e, *n))
+            }
             Shape::Union { .. } | Shape::Csg { .. } | Shape::Text(_) => empty(),
         };
         (shape, world_from_obj)
@@ -558,6 +565,9 @@ pub struct SurfaceHit<'a> {
     pub interior: Option<&'a Arc<Interior>>,
     /// The primitive's flags.
     pub flags: ObjectFlags,
+    /// A `blob` whose components have textures of their own, and the point in
+    /// its space: the shader blends the components' textures there.
+    pub blob: Option<(&'a shapes::blob::Blob, DVec3)>,
 }
 
 impl World {
@@ -610,7 +620,12 @@ impl World {
                 }
             }
         }
+        let blob = match shape {
+            PrimShape::Blob(b) if b.textured() => Some((&**b, local)),
+            _ => None,
+        };
         SurfaceHit {
+            blob,
             p,
             geo_normal,
             normal,

@@ -2,10 +2,12 @@
 
 use super::csg::Csg;
 use super::mesh::MeshAccel;
+use super::shapes::blob::Blob;
 use super::shapes::flat::{self, Polygon};
 use super::shapes::poly::Poly;
 use super::shapes::prism::Prism;
 use super::shapes::quadric::Frustum;
+use super::shapes::superellipsoid::Superellipsoid;
 use super::shapes::surface::Quadric;
 use super::shapes::{solid, torus};
 use super::{Aabb, Ray};
@@ -97,6 +99,10 @@ pub enum PrimShape {
     Mesh(Arc<MeshAccel>),
     /// `merge`, `intersection`, `difference` or a clipped object.
     Csg(Arc<Csg>),
+    /// A `blob`.
+    Blob(Arc<Blob>),
+    /// A `superellipsoid`.
+    Superellipsoid(Superellipsoid),
 }
 
 /// One leaf object after flattening: geometry, placement, resolved texture.
@@ -233,6 +239,8 @@ impl PrimShape {
             PrimShape::Mesh(m) => m.intersect(ray, t_min, t_max).map(|(t, i)| (t, 0, i)),
             PrimShape::Prism(p) => p.nearest(ray, t_min, t_max).map(|(t, sub)| (t, 0, sub)),
             PrimShape::Csg(c) => c.intersect(ray, t_min, t_max),
+            PrimShape::Blob(b) => b.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
+            PrimShape::Superellipsoid(s) => s.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
             PrimShape::Frustum(_) | PrimShape::Torus { .. } => {
                 let mut best: Option<ShapeHit> = None;
                 self.hits(ray, t_min, t_max, &mut |t, sub| {
@@ -280,6 +288,14 @@ impl PrimShape {
             PrimShape::Prism(p) => p.hits(ray, t_min, t_max, f),
             PrimShape::Quadric(q) => q.hits(ray, t_min, t_max, &mut |t| f(t, 0)),
             PrimShape::Poly(q) => q.hits(ray, t_min, t_max, &mut |t| f(t, 0)),
+            PrimShape::Blob(b) => b.hits(ray, t_min, t_max, &mut |t| {
+                f(t, 0);
+                true
+            }),
+            PrimShape::Superellipsoid(s) => s.hits(ray, t_min, t_max, &mut |t| {
+                f(t, 0);
+                true
+            }),
             _ => {
                 if let Some((t, _, sub)) = self.intersect(ray, t_min, t_max) {
                     f(t, sub)
@@ -306,6 +322,8 @@ impl PrimShape {
             PrimShape::Mesh(m) => m.normal(sub),
             PrimShape::Prism(pr) => pr.normal(p, sub),
             PrimShape::Csg(_) => DVec3::Y,
+            PrimShape::Blob(b) => b.normal(p),
+            PrimShape::Superellipsoid(s) => s.normal(p),
         }
     }
 
@@ -356,6 +374,8 @@ impl PrimShape {
             PrimShape::Mesh(m) => m.inside(p),
             PrimShape::Prism(pr) => pr.inside(p),
             PrimShape::Csg(c) => c.inside(p),
+            PrimShape::Blob(b) => b.inside(p),
+            PrimShape::Superellipsoid(s) => s.inside(p),
             PrimShape::Triangle { .. }
             | PrimShape::SmoothTriangle(_)
             | PrimShape::Disc { .. }
@@ -391,6 +411,8 @@ impl PrimShape {
             PrimShape::Mesh(m) => m.bounds(),
             PrimShape::Prism(p) => p.bounds(),
             PrimShape::Csg(c) => return c.bounds(),
+            PrimShape::Blob(b) => return b.bounds(),
+            PrimShape::Superellipsoid(s) => s.bounds(),
         })
     }
 }

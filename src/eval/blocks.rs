@@ -48,12 +48,10 @@ pub(crate) const BLOCKS: &[&str] = &[
 
 /// POV-Ray blocks that a later release implements.
 const LATER_BLOCKS: &[&str] = &[
-    "blob",
     "isosurface",
     "julia_fractal",
     "lathe",
     "sor",
-    "superellipsoid",
     "sphere_sweep",
     "bicubic_patch",
     "irid",
@@ -111,7 +109,9 @@ impl Evaluator<'_> {
         // pigment, finish or normal as a change to the one in force.
         let defer = matches!(kw, "texture" | "texture_map") || OBJECT_BLOCKS.contains(&kw);
         let outer_defer = std::mem::replace(&mut self.defer_material_blocks, defer);
+        let in_blob = std::mem::replace(&mut self.blob_items, kw == "blob");
         self.expand(&b.items, &mut toks);
+        self.blob_items = in_blob;
         self.defer_material_blocks = outer_defer;
         self.coefficient_lists = outer;
         let mut c = Cursor::new(toks.toks, kw, b.span);
@@ -121,6 +121,9 @@ impl Evaluator<'_> {
             ))));
         }
         Ok(Some(match kw {
+            "sphere" | "cylinder" if in_blob => {
+                Value::Object(std::sync::Arc::new(self.blob_component(&mut c)?))
+            }
             kw if OBJECT_BLOCKS.contains(&kw) => {
                 Value::Object(std::sync::Arc::new(self.object(&mut c)?))
             }

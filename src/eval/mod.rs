@@ -6,6 +6,7 @@
 //! whose evaluation failed are [`Value::Poison`] so they do not cause further reports.
 
 mod atmosphere;
+mod blob;
 mod blocks;
 mod builtins;
 mod camera;
@@ -199,6 +200,7 @@ pub fn eval_cached(
         fonts: Default::default(),
         coefficient_lists: false,
         defer_material_blocks: false,
+        blob_items: false,
     };
     ev.define_command_line();
     ev.run_top(&file.items);
@@ -266,6 +268,9 @@ pub(crate) struct Evaluator<'a> {
     /// POV-Ray, so it is kept unevaluated ([`cursor::Tok::Deferred`]) until the
     /// reader knows what it modifies (see `modify.rs`).
     pub(crate) defer_material_blocks: bool,
+    /// Set while the items of a `blob` are read: there a `sphere` or `cylinder`
+    /// block is a blob component (see `blob.rs`).
+    pub(crate) blob_items: bool,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps

@@ -125,6 +125,20 @@ fn shade(
     weight: f64,
     ctx: &mut TraceCtx,
 ) -> DVec3 {
+    if let Some((blob, local)) = s.blob {
+        // A blob's component textures: each shaded with its share of the
+        // field at the point, and the colours averaged (as POV-Ray does).
+        let mut out = DVec3::ZERO;
+        for (tex, w) in blob.texture_weights(local) {
+            let mut part = SurfaceHit { blob: None, ..*s };
+            if let Some((t, m)) = tex {
+                part.texture = t;
+                part.texture_from_world = Some(m);
+            }
+            out += w * shade_texture(world, &part, part.texture, ray, level, weight * w, ctx);
+        }
+        return out;
+    }
     shade_texture(world, s, s.texture, ray, level, weight, ctx)
 }
 

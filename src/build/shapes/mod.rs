@@ -1,11 +1,13 @@
 //! Ray intersection, normals and inside tests of each kind of shape, in the
 //! shape's own space. One file per family; [`super::PrimShape`] dispatches.
 
+pub mod blob;
 pub mod flat;
 pub mod poly;
 pub mod prism;
 pub mod quadric;
 pub mod solid;
+pub mod superellipsoid;
 pub mod surface;
 pub mod text;
 pub mod torus;
