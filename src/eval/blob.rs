@@ -109,6 +109,8 @@ impl Evaluator<'_> {
         let span = c.span;
         let mut threshold = 1.0;
         let mut components = Vec::new();
+        // A component that failed was reported: the blob is not "empty" then.
+        let mut failed = false;
         loop {
             match c.peek() {
                 Some(Tok::Kw("threshold", _)) => {
@@ -138,12 +140,13 @@ impl Evaluator<'_> {
                     _ => break,
                 },
                 Some(Tok::Block(_, Value::Poison, _)) => {
+                    failed = true;
                     c.next();
                 }
                 _ => break,
             }
         }
-        if components.is_empty() {
+        if components.is_empty() && !failed {
             self.warn(
                 Diagnostic::warning(codes::MISSING_VALUE, span, "this blob has no components")
                     .with_help("add components, e.g. `sphere { <0, 0, 0>, 1, 1 }`"),
@@ -170,7 +173,11 @@ impl Evaluator<'_> {
                         Ok(())
                     }
                 }
-                Tok::Kw(kw @ ("threshold" | "component"), s) => Err(late(kw, s)),
+                Tok::Kw(kw @ ("threshold" | "component"), s) => {
+                    // Its values are not reported again.
+                    c.poisoned = true;
+                    Err(late(kw, s))
+                }
                 Tok::Block(kw @ ("sphere" | "cylinder"), _, s) => Err(late(kw, s)),
                 tok => self.modifier(&mut obj, c, tok, false),
             };
