@@ -29,8 +29,11 @@ pub struct Blob {
     bounds: Aabb,
     /// Per component: its own texture and `texture_from_world`, or `None` for
     /// the blob's texture.
-    textures: Vec<Option<(Arc<Texture>, DMat4)>>,
+    textures: Vec<Option<OwnTexture>>,
 }
+
+/// A component's own texture and its `texture_from_world`.
+pub type OwnTexture = (Arc<Texture>, DMat4);
 
 #[derive(Clone, Debug)]
 struct Comp {
@@ -197,8 +200,8 @@ impl Blob {
     /// each component's share is the size of its field there, as POV-Ray blends
     /// them (measured). `None` stands for the blob's own texture; repeated
     /// textures are merged.
-    pub fn texture_weights(&self, p: DVec3) -> Vec<(Option<&(Arc<Texture>, DMat4)>, f64)> {
-        let mut out: Vec<(Option<&(Arc<Texture>, DMat4)>, f64)> = Vec::new();
+    pub fn texture_weights(&self, p: DVec3) -> Vec<(Option<&OwnTexture>, f64)> {
+        let mut out: Vec<(Option<&OwnTexture>, f64)> = Vec::new();
         let mut total = 0.0;
         for (c, tex) in self.comps.iter().zip(&self.textures) {
             if !contains(&c.bounds, p) {
@@ -210,7 +213,7 @@ impl Blob {
             }
             total += w;
             let tex = tex.as_ref();
-            let same = |t: &Option<&(Arc<Texture>, DMat4)>| match (t, &tex) {
+            let same = |t: &Option<&OwnTexture>| match (t, &tex) {
                 (None, None) => true,
                 (Some(a), Some(b)) => Arc::ptr_eq(&a.0, &b.0) && a.1 == b.1,
                 _ => false,
@@ -661,7 +664,7 @@ mod tests {
             let target = DVec3::new((f * 1.7).sin() * 3.0, (f * 2.3).cos() * 3.0, 0.0);
             let ray = Ray::new(o, target - o);
             let h = all(&b, &ray);
-            assert!(h.len() % 2 == 0, "{h:?}");
+            assert!(h.len().is_multiple_of(2), "{h:?}");
             for w in h.windows(2) {
                 assert!(w[0] <= w[1]);
             }

@@ -335,7 +335,7 @@ mod tests {
                 }
                 // The ray's start is outside, so crossings come in pairs.
                 if !s.inside(o) {
-                    assert!(h.len() % 2 == 0, "<{e}, {n}>: {h:?}");
+                    assert!(h.len().is_multiple_of(2), "<{e}, {n}>: {h:?}");
                 }
             }
             assert!(count > 200, "<{e}, {n}>: {count}");
