@@ -249,8 +249,7 @@ impl Blob {
         let exit = t0.max(t1).min_element().min(t_max);
         // Polynomials in u = (t − shift)·|dir| along a unit direction from a
         // point near the blob: small, well-scaled coefficients.
-        let shift = enter.max(t_min.max(f64::MIN));
-        let shift = if shift.is_finite() { shift } else { 0.0 };
+        let shift = if enter.is_finite() { enter } else { 0.0 };
         let local = Ray::new(ray.at(shift), ray.dir / len);
         let (u_lo, u_hi) = ((t_min - shift) * len, (exit - shift) * len);
         let mut spans: Vec<Interval> = Vec::new();
