@@ -162,6 +162,11 @@ impl Blob {
         (!self.bounds.is_empty()).then_some(self.bounds)
     }
 
+    /// The components' own textures.
+    pub fn own_textures(&self) -> impl Iterator<Item = &Arc<Texture>> {
+        self.textures.iter().flatten().map(|(t, _)| t)
+    }
+
     /// Whether any component has a texture of its own.
     pub fn textured(&self) -> bool {
         self.textures.iter().any(Option::is_some)
