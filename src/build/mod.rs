@@ -499,6 +499,13 @@ impl Builder {
                 PrimShape::Sor(Arc::new(shapes::sor::Sor::new(points, *open)))
             }
             Shape::Mesh(m) => PrimShape::Mesh(self.mesh(m)),
+            Shape::Blob(data) => PrimShape::Blob(Arc::new(shapes::blob::Blob::new(
+                data,
+                world_from_obj.as_ref(),
+            ))),
+            Shape::Superellipsoid { e, n } => {
+                PrimShape::Superellipsoid(shapes::superellipsoid::Superellipsoid::new(*e, *n))
+            }
             Shape::Union { .. } | Shape::Csg { .. } | Shape::Text(_) => empty(),
         };
         (shape, world_from_obj)
@@ -567,6 +574,9 @@ pub struct SurfaceHit<'a> {
     pub interior: Option<&'a Arc<Interior>>,
     /// The primitive's flags.
     pub flags: ObjectFlags,
+    /// A `blob` whose components have textures of their own, and the point in
+    /// its space: the shader blends the components' textures there.
+    pub blob: Option<(&'a shapes::blob::Blob, DVec3)>,
 }
 
 impl World {
@@ -619,7 +629,12 @@ impl World {
                 }
             }
         }
+        let blob = match shape {
+            PrimShape::Blob(b) if b.textured() => Some((&**b, local)),
+            _ => None,
+        };
         SurfaceHit {
+            blob,
             p,
             geo_normal,
             normal,

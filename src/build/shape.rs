@@ -2,12 +2,14 @@
 
 use super::csg::Csg;
 use super::mesh::MeshAccel;
+use super::shapes::blob::Blob;
 use super::shapes::flat::{self, Polygon};
 use super::shapes::lathe::Lathe;
 use super::shapes::poly::Poly;
 use super::shapes::prism::Prism;
 use super::shapes::quadric::Frustum;
 use super::shapes::sor::Sor;
+use super::shapes::superellipsoid::Superellipsoid;
 use super::shapes::surface::Quadric;
 use super::shapes::{solid, torus};
 use super::{Aabb, Ray};
@@ -103,6 +105,10 @@ pub enum PrimShape {
     Mesh(Arc<MeshAccel>),
     /// `merge`, `intersection`, `difference` or a clipped object.
     Csg(Arc<Csg>),
+    /// A `blob`.
+    Blob(Arc<Blob>),
+    /// A `superellipsoid`.
+    Superellipsoid(Superellipsoid),
 }
 
 /// One leaf object after flattening: geometry, placement, resolved texture.
@@ -242,6 +248,8 @@ impl PrimShape {
             PrimShape::Lathe(l) => l.nearest(ray, t_min, t_max).map(|(t, sub)| (t, 0, sub)),
             PrimShape::Sor(s) => s.nearest(ray, t_min, t_max).map(|(t, sub)| (t, 0, sub)),
             PrimShape::Csg(c) => c.intersect(ray, t_min, t_max),
+            PrimShape::Blob(b) => b.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
+            PrimShape::Superellipsoid(s) => s.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
             PrimShape::Frustum(_) | PrimShape::Torus { .. } => {
                 let mut best: Option<ShapeHit> = None;
                 self.hits(ray, t_min, t_max, &mut |t, sub| {
@@ -291,6 +299,14 @@ impl PrimShape {
             PrimShape::Sor(s) => s.hits(ray, t_min, t_max, f),
             PrimShape::Quadric(q) => q.hits(ray, t_min, t_max, &mut |t| f(t, 0)),
             PrimShape::Poly(q) => q.hits(ray, t_min, t_max, &mut |t| f(t, 0)),
+            PrimShape::Blob(b) => b.hits(ray, t_min, t_max, &mut |t| {
+                f(t, 0);
+                true
+            }),
+            PrimShape::Superellipsoid(s) => s.hits(ray, t_min, t_max, &mut |t| {
+                f(t, 0);
+                true
+            }),
             _ => {
                 if let Some((t, _, sub)) = self.intersect(ray, t_min, t_max) {
                     f(t, sub)
@@ -319,6 +335,8 @@ impl PrimShape {
             PrimShape::Lathe(l) => l.normal(p, sub),
             PrimShape::Sor(s) => s.normal(p, sub),
             PrimShape::Csg(_) => DVec3::Y,
+            PrimShape::Blob(b) => b.normal(p),
+            PrimShape::Superellipsoid(s) => s.normal(p),
         }
     }
 
@@ -371,6 +389,8 @@ impl PrimShape {
             PrimShape::Lathe(l) => l.inside(p),
             PrimShape::Sor(s) => s.inside(p),
             PrimShape::Csg(c) => c.inside(p),
+            PrimShape::Blob(b) => b.inside(p),
+            PrimShape::Superellipsoid(s) => s.inside(p),
             PrimShape::Triangle { .. }
             | PrimShape::SmoothTriangle(_)
             | PrimShape::Disc { .. }
@@ -408,6 +428,8 @@ impl PrimShape {
             PrimShape::Lathe(l) => l.bounds(),
             PrimShape::Sor(s) => s.bounds(),
             PrimShape::Csg(c) => return c.bounds(),
+            PrimShape::Blob(b) => return b.bounds(),
+            PrimShape::Superellipsoid(s) => s.bounds(),
         })
     }
 }

@@ -28,7 +28,11 @@ pub(super) fn translucent(primitives: &[Primitive]) -> Vec<bool> {
         .map(|p| {
             texture(&p.texture)
                 || match &p.shape {
-                    PrimShape::Csg(c) => c.leaves.iter().any(|l| texture(&l.texture)),
+                    PrimShape::Csg(c) => c.leaves.iter().any(|l| {
+                        texture(&l.texture)
+                            || matches!(&l.shape, PrimShape::Blob(b) if b.own_textures().any(|t| texture(t)))
+                    }),
+                    PrimShape::Blob(b) => b.own_textures().any(|t| texture(t)),
                     PrimShape::Mesh(m) => m.data.textures.iter().any(|t| texture(t)),
                     _ => false,
                 }

@@ -48,10 +48,8 @@ pub(crate) const BLOCKS: &[&str] = &[
 
 /// POV-Ray blocks that a later release implements.
 const LATER_BLOCKS: &[&str] = &[
-    "blob",
     "isosurface",
     "julia_fractal",
-    "superellipsoid",
     "sphere_sweep",
     "bicubic_patch",
     "irid",
@@ -109,7 +107,9 @@ impl Evaluator<'_> {
         // pigment, finish or normal as a change to the one in force.
         let defer = matches!(kw, "texture" | "texture_map") || OBJECT_BLOCKS.contains(&kw);
         let outer_defer = std::mem::replace(&mut self.defer_material_blocks, defer);
+        let in_blob = std::mem::replace(&mut self.blob_items, kw == "blob");
         self.expand(&b.items, &mut toks);
+        self.blob_items = in_blob;
         self.defer_material_blocks = outer_defer;
         self.coefficient_lists = outer;
         let mut c = Cursor::new(toks.toks, kw, b.span);
@@ -119,6 +119,9 @@ impl Evaluator<'_> {
             ))));
         }
         Ok(Some(match kw {
+            "sphere" | "cylinder" if in_blob => {
+                Value::Object(std::sync::Arc::new(self.blob_component(&mut c)?))
+            }
             kw if OBJECT_BLOCKS.contains(&kw) => {
                 Value::Object(std::sync::Arc::new(self.object(&mut c)?))
             }

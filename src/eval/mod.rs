@@ -6,6 +6,7 @@
 //! whose evaluation failed are [`Value::Poison`] so they do not cause further reports.
 
 mod atmosphere;
+mod blob;
 mod blocks;
 mod builtins;
 mod camera;
@@ -202,6 +203,7 @@ pub fn eval_cached(
         coefficient_lists: false,
         defer_material_blocks: false,
         built_objects: Default::default(),
+        blob_items: false,
     };
     ev.define_command_line();
     ev.run_top(&file.items);
@@ -271,6 +273,9 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) defer_material_blocks: bool,
     /// Objects built for `trace`, `min_extent` and `max_extent`.
     pub(crate) built_objects: trace::BuiltObjects,
+    /// Set while the items of a `blob` are read: there a `sphere` or `cylinder`
+    /// block is a blob component (see `blob.rs`).
+    pub(crate) blob_items: bool,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps

@@ -63,6 +63,8 @@ pub(crate) const OBJECT_BLOCKS: &[&str] = &[
     "lathe",
     "sor",
     "text",
+    "blob",
+    "superellipsoid",
     "merge",
     "intersection",
     "difference",
@@ -72,6 +74,9 @@ impl Evaluator<'_> {
     /// Evaluates an object block (`c.block` says which).
     pub(crate) fn object(&mut self, c: &mut Cursor) -> R<Object> {
         let span = c.span;
+        if c.block == "blob" {
+            return self.blob(c);
+        }
         if let Some(mut o) = self.new_shape(c)? {
             self.modifiers(&mut o, c, false);
             return Ok(o);
@@ -267,7 +272,13 @@ impl Evaluator<'_> {
         }
     }
 
-    fn modifier(&mut self, obj: &mut Object, c: &mut Cursor, tok: Tok, is_union: bool) -> R<()> {
+    pub(crate) fn modifier(
+        &mut self,
+        obj: &mut Object,
+        c: &mut Cursor,
+        tok: Tok,
+        is_union: bool,
+    ) -> R<()> {
         let tok = match tok {
             Tok::Deferred(b) => {
                 let base = self.material_base(obj, b.block.keyword.name);

@@ -275,6 +275,7 @@ impl Evaluator<'_> {
             "lathe" => self.lathe(c)?,
             "sor" => self.sor(c)?,
             "text" => self.text(c)?,
+            "superellipsoid" => self.superellipsoid(c)?,
             _ => return Ok(None),
         };
         Ok(Some(Object::new(shape, span)))

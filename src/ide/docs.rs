@@ -312,7 +312,7 @@ pub const DOCS: &[Doc] = &[
     kw(
         "sturm",
         "sturm",
-        "Accepted on poly, cubic, quartic, torus, prism, lathe and sor: rts's root solvers are always the careful ones.",
+        "Accepted on poly, cubic, quartic, torus, prism, lathe, sor and blob: rts's root solvers are always the careful ones.",
     ),
     kw(
         "mesh",
@@ -1140,10 +1140,30 @@ pub const DOCS: &[Doc] = &[
     kw("look_along", "look_along", "A camera_path looks along its path's tangent."),
     kw("roll", "roll DEGREES", "A camera_path's roll about its view direction."),
     // later
-    later(
+    kw(
         "blob",
-        "blob { threshold T sphere { … } … }",
-        "A blob of spheres and cylinders.",
+        "blob { threshold T  sphere { C, R, [strength] S … }  cylinder { A, B, R, [strength] S … } … }",
+        "The surface where the summed fields of spherical and cylindrical components equal the threshold; each component's field falls from S at its centre (or axis) to 0 at radius R as S·(1 − (d/R)²)²; inside where the field is above the threshold. Components may have their own textures (blended by field) and transforms.",
+    ),
+    kw(
+        "threshold",
+        "threshold T",
+        "The field value on a blob's surface (default 1): inside where the summed field is above it.",
+    ),
+    kw(
+        "strength",
+        "sphere { C, R, strength S }",
+        "The field of a blob component at its centre or axis (the keyword itself may be left out); negative strengths carve.",
+    ),
+    kw(
+        "component",
+        "component S, R, C",
+        "POV-Ray's old spelling of a spherical blob component: strength, radius, centre.",
+    ),
+    kw(
+        "hierarchy",
+        "hierarchy [on|off]",
+        "Accepted on a blob: rts always bounds many components with a hierarchy of its own.",
     ),
     later(
         "isosurface",
@@ -1180,10 +1200,10 @@ pub const DOCS: &[Doc] = &[
         "sor { N, <r,h>… [open] [sturm] … }",
         "A surface of revolution around y: r² is a cubic spline over the height through the points (the first and last are control points), with flat end caps unless open.",
     ),
-    later(
+    kw(
         "superellipsoid",
         "superellipsoid { <E, N> }",
-        "A superquadric ellipsoid.",
+        "The surface (|x|^(2/E) + |y|^(2/E))^(E/N) + |z|^(2/N) = 1 within the box from −1 to 1: small exponents give a rounded box, 1 a sphere, 2 an octahedron, larger ones pinched stars.",
     ),
     kw(
         "text",

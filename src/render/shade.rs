@@ -125,6 +125,20 @@ fn shade(
     weight: f64,
     ctx: &mut TraceCtx,
 ) -> DVec3 {
+    if let Some((blob, local)) = s.blob {
+        // A blob's component textures: each shaded with its share of the
+        // field at the point, and the colours averaged (as POV-Ray does).
+        let mut out = DVec3::ZERO;
+        for (tex, w) in blob.texture_weights(local) {
+            let mut part = SurfaceHit { blob: None, ..*s };
+            if let Some((t, m)) = tex {
+                part.texture = t;
+                part.texture_from_world = Some(m);
+            }
+            out += w * shade_texture(world, &part, part.texture, ray, level, weight * w, ctx);
+        }
+        return out;
+    }
     shade_texture(world, s, s.texture, ray, level, weight, ctx)
 }
 
@@ -337,7 +351,25 @@ pub fn shadow_filter(world: &World, ray: &Ray, t_min: f64, t_max: f64, hint: &mu
         let tp = s
             .texture_from_world
             .map_or(s.p, |m| m.transform_point3(s.p));
-        if s.texture.patterned.is_some() {
+        if let Some((blob, local)) = s.blob {
+            // A blob's component textures: their filters averaged by the
+            // components' shares of the field, as their colours are.
+            let mut sum = DVec3::ZERO;
+            for (own, w) in blob.texture_weights(local) {
+                let (tex, m) = match own {
+                    Some((t, m)) => (t, Some(m)),
+                    None => (s.texture, s.texture_from_world),
+                };
+                let tp = m.map_or(s.p, |m| m.transform_point3(s.p));
+                pigment::for_each_plain(tex, tp, w, &mut |t, w| {
+                    sum += w * layers_filter(t, tp, s.uv);
+                });
+            }
+            through *= sum;
+            if through.max_element() <= 0.0 {
+                return DVec3::ZERO;
+            }
+        } else if s.texture.patterned.is_some() {
             // The filters of the textures the pattern shows here, averaged by
             // their blend weights.
             let mut sum = DVec3::ZERO;

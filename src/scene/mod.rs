@@ -7,6 +7,7 @@
 
 mod animation;
 mod atmosphere;
+mod blob;
 mod camera;
 mod light;
 mod material;
@@ -16,6 +17,7 @@ mod transform;
 
 pub use animation::{Timeline, DEFAULT_FPS};
 pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, SkySphere};
+pub use blob::{BlobComponent, BlobData, BlobKind};
 pub use camera::{Camera, CameraKind};
 pub use light::{AreaLight, Beam, Light, LightKind};
 pub use material::{

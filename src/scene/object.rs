@@ -208,6 +208,17 @@ pub enum Shape {
     /// plane, baseline on y = 0 from x = 0, extruded from z = 0 to z = THICKNESS;
     /// a solid (the union of its glyphs).
     Text(Arc<TextData>),
+    /// `blob { … }`: the surface where the components' summed field equals the
+    /// threshold (see [`super::BlobData`]).
+    Blob(Arc<super::BlobData>),
+    /// `superellipsoid { <E, N> }`: `(|x|^(2/E) + |y|^(2/E))^(E/N) + |z|^(2/N) = 1`,
+    /// inside the box from −1 to 1, inside where the left side is below 1.
+    Superellipsoid {
+        /// The east-west exponent (> 0).
+        e: f64,
+        /// The north-south exponent (> 0).
+        n: f64,
+    },
     /// `merge`, `intersection` or `difference` (a `union` is [`Shape::Union`]).
     Csg {
         /// Which operation.

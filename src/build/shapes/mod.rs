@@ -1,6 +1,7 @@
 //! Ray intersection, normals and inside tests of each kind of shape, in the
 //! shape's own space. One file per family; [`super::PrimShape`] dispatches.
 
+pub mod blob;
 pub mod flat;
 pub mod lathe;
 pub mod poly;
@@ -9,6 +10,7 @@ pub mod quadric;
 pub mod revolve;
 pub mod solid;
 pub mod sor;
+pub mod superellipsoid;
 pub mod surface;
 pub mod text;
 pub mod torus;
