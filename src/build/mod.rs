@@ -490,6 +490,7 @@ impl Builder {
                 curves, heights[0], heights[1], *conic, *open,
             ))),
             Shape::Mesh(m) => PrimShape::Mesh(self.mesh(m)),
+            Shape::Isosurface(i) => PrimShape::Isosurface(i.clone()),
             Shape::Union { .. } | Shape::Csg { .. } | Shape::Text(_) => empty(),
         };
         (shape, world_from_obj)

@@ -97,6 +97,8 @@ pub enum PrimShape {
     Mesh(Arc<MeshAccel>),
     /// `merge`, `intersection`, `difference` or a clipped object.
     Csg(Arc<Csg>),
+    /// An `isosurface`.
+    Isosurface(Arc<super::shapes::isosurface::Isosurface>),
 }
 
 /// One leaf object after flattening: geometry, placement, resolved texture.
@@ -233,6 +235,7 @@ impl PrimShape {
             PrimShape::Mesh(m) => m.intersect(ray, t_min, t_max).map(|(t, i)| (t, 0, i)),
             PrimShape::Prism(p) => p.nearest(ray, t_min, t_max).map(|(t, sub)| (t, 0, sub)),
             PrimShape::Csg(c) => c.intersect(ray, t_min, t_max),
+            PrimShape::Isosurface(i) => i.nearest(ray, t_min, t_max).map(|(t, sub)| (t, 0, sub)),
             PrimShape::Frustum(_) | PrimShape::Torus { .. } => {
                 let mut best: Option<ShapeHit> = None;
                 self.hits(ray, t_min, t_max, &mut |t, sub| {
@@ -280,6 +283,7 @@ impl PrimShape {
             PrimShape::Prism(p) => p.hits(ray, t_min, t_max, f),
             PrimShape::Quadric(q) => q.hits(ray, t_min, t_max, &mut |t| f(t, 0)),
             PrimShape::Poly(q) => q.hits(ray, t_min, t_max, &mut |t| f(t, 0)),
+            PrimShape::Isosurface(i) => i.hits(ray, t_min, t_max, false, f),
             _ => {
                 if let Some((t, _, sub)) = self.intersect(ray, t_min, t_max) {
                     f(t, sub)
@@ -306,6 +310,7 @@ impl PrimShape {
             PrimShape::Mesh(m) => m.normal(sub),
             PrimShape::Prism(pr) => pr.normal(p, sub),
             PrimShape::Csg(_) => DVec3::Y,
+            PrimShape::Isosurface(i) => i.normal(p, sub),
         }
     }
 
@@ -356,6 +361,7 @@ impl PrimShape {
             PrimShape::Mesh(m) => m.inside(p),
             PrimShape::Prism(pr) => pr.inside(p),
             PrimShape::Csg(c) => c.inside(p),
+            PrimShape::Isosurface(i) => i.inside(p),
             PrimShape::Triangle { .. }
             | PrimShape::SmoothTriangle(_)
             | PrimShape::Disc { .. }
@@ -391,6 +397,10 @@ impl PrimShape {
             PrimShape::Mesh(m) => m.bounds(),
             PrimShape::Prism(p) => p.bounds(),
             PrimShape::Csg(c) => return c.bounds(),
+            PrimShape::Isosurface(i) => {
+                let (lo, hi) = i.container.bounds();
+                Aabb::new(lo, hi)
+            }
         })
     }
 }

@@ -13,6 +13,7 @@ mod camera_path;
 mod cursor;
 mod directives;
 mod exprs;
+pub mod function;
 mod import;
 mod include;
 mod items;
@@ -199,6 +200,7 @@ pub fn eval_cached(
         fonts: Default::default(),
         coefficient_lists: false,
         defer_material_blocks: false,
+        pending_function: None,
     };
     ev.define_command_line();
     ev.run_top(&file.items);
@@ -266,6 +268,8 @@ pub(crate) struct Evaluator<'a> {
     /// POV-Ray, so it is kept unevaluated ([`cursor::Tok::Deferred`]) until the
     /// reader knows what it modifies (see `modify.rs`).
     pub(crate) defer_material_blocks: bool,
+    /// A `function { }` met as a pattern, until the pattern reader takes it.
+    pub(crate) pending_function: Option<Arc<function::Function>>,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps

@@ -273,6 +273,7 @@ impl Evaluator<'_> {
             "polyhedron" => self.polyhedron(c)?,
             "prism" => self.prism(c)?,
             "text" => self.text(c)?,
+            "isosurface" => self.isosurface_shape(c)?,
             _ => return Ok(None),
         };
         Ok(Some(Object::new(shape, span)))

@@ -1145,10 +1145,55 @@ pub const DOCS: &[Doc] = &[
         "blob { threshold T sphere { … } … }",
         "A blob of spheres and cylinders.",
     ),
-    later(
+    kw(
         "isosurface",
-        "isosurface { function { … } … }",
-        "A surface where a function is zero.",
+        "isosurface { function { … } [contained_by { box { … } | sphere { … } }] [threshold T] [accuracy A] [max_gradient G] [open] [max_trace N | all_intersections] … }",
+        "The surface where a function equals its threshold, inside where it is below, cut by its container (a box from <-1,-1,-1> to <1,1,1> unless given).",
+    ),
+    kw(
+        "contained_by",
+        "contained_by { box { A, B } | sphere { C, R } }",
+        "The region an isosurface is searched in; where the function is below the threshold on it, its surface shows (unless `open`).",
+    ),
+    kw(
+        "threshold",
+        "threshold T",
+        "An isosurface's surface is where the function equals T (default 0).",
+    ),
+    kw(
+        "accuracy",
+        "accuracy A",
+        "How closely an isosurface's root is found along the ray (default 0.001).",
+    ),
+    kw(
+        "max_gradient",
+        "max_gradient G",
+        "An upper bound of the isosurface function's slope (default 1.1): rts steps along a ray no further than the function's distance to the threshold divided by G; too low a value misses surfaces (rts warns with the measured slope).",
+    ),
+    kw(
+        "evaluate",
+        "evaluate P0, P1, P2",
+        "POV-Ray's adaptive max_gradient for isosurfaces: rts takes P0 times P1 as max_gradient.",
+    ),
+    kw(
+        "all_intersections",
+        "all_intersections",
+        "An isosurface reports every crossing along a ray (needed for a closed cut in CSG).",
+    ),
+    kw(
+        "max_trace",
+        "max_trace N",
+        "How many crossings along a ray an isosurface reports (default 1, as in POV-Ray).",
+    ),
+    kw(
+        "function",
+        "function { EXPR } | function(A, B, …) { EXPR } | function { pigment { … } } | function { pattern { … } }",
+        "A user-defined function of x, y, z (or of the named parameters), compiled once; call it as F(…) in expressions, use it as a pattern or as an isosurface's function.",
+    ),
+    kw(
+        "pattern",
+        "function { pattern { PATTERN modifiers } }",
+        "A function giving a pattern's value (0 to 1) at <x, y, z>.",
     ),
     later(
         "julia_fractal",

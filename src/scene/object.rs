@@ -193,6 +193,8 @@ pub enum Shape {
     /// plane, baseline on y = 0 from x = 0, extruded from z = 0 to z = THICKNESS;
     /// a solid (the union of its glyphs).
     Text(Arc<TextData>),
+    /// `isosurface { function { … } contained_by { … } … }`.
+    Isosurface(Arc<crate::build::shapes::isosurface::Isosurface>),
     /// `merge`, `intersection` or `difference` (a `union` is [`Shape::Union`]).
     Csg {
         /// Which operation.

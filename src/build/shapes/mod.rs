@@ -2,6 +2,7 @@
 //! shape's own space. One file per family; [`super::PrimShape`] dispatches.
 
 pub mod flat;
+pub mod isosurface;
 pub mod poly;
 pub mod prism;
 pub mod quadric;
