@@ -6,8 +6,11 @@
 use crate::render::pigment::noise::{noise, signed_noise};
 use glam::DVec3;
 
+/// A built-in function of its arguments.
+pub type Native = fn(&[f64]) -> f64;
+
 /// `(name, number of arguments, function)` for every internal function.
-pub const INTERNALS: &[(&str, usize, fn(&[f64]) -> f64)] = &[
+pub const INTERNALS: &[(&str, usize, Native)] = &[
     ("f_sphere", 4, f_sphere),
     ("f_torus", 5, f_torus),
     ("f_rounded_box", 7, f_rounded_box),
@@ -87,7 +90,7 @@ fn f_ridged_mf(a: &[f64]) -> f64 {
         q *= lac;
         weight = (signal * gain).clamp(0.0, 1.0);
         signal = offset - signed_noise(q).abs();
-        signal *= signal * weight;
+        signal = signal * signal * weight;
         result += signal * lac.powf(-(i as f64) * h);
     }
     result

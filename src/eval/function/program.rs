@@ -211,7 +211,7 @@ fn run(ops: &[Op], args: &[f64]) -> f64 {
             Op::And => bin!(|l, r| b(l != 0.0 && r != 0.0)),
             Op::Or => bin!(|l, r| b(l != 0.0 || r != 0.0)),
             Op::F1(f) => st[sp - 1] = f(st[sp - 1]),
-            Op::F2(f) => bin!(|l, r| f(l, r)),
+            Op::F2(f) => bin!(f),
             Op::Select3 => {
                 sp -= 2;
                 let c = st[sp - 1];
