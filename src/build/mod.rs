@@ -506,6 +506,7 @@ impl Builder {
             Shape::Superellipsoid { e, n } => {
                 PrimShape::Superellipsoid(shapes::superellipsoid::Superellipsoid::new(*e, *n))
             }
+            Shape::Isosurface(i) => PrimShape::Isosurface(i.clone()),
             Shape::Union { .. } | Shape::Csg { .. } | Shape::Text(_) => empty(),
         };
         (shape, world_from_obj)

@@ -109,6 +109,8 @@ pub enum PrimShape {
     Blob(Arc<Blob>),
     /// A `superellipsoid`.
     Superellipsoid(Superellipsoid),
+    /// An `isosurface`.
+    Isosurface(Arc<super::shapes::isosurface::Isosurface>),
 }
 
 /// One leaf object after flattening: geometry, placement, resolved texture.
@@ -250,6 +252,7 @@ impl PrimShape {
             PrimShape::Csg(c) => c.intersect(ray, t_min, t_max),
             PrimShape::Blob(b) => b.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
             PrimShape::Superellipsoid(s) => s.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
+            PrimShape::Isosurface(i) => i.nearest(ray, t_min, t_max).map(|(t, sub)| (t, 0, sub)),
             PrimShape::Frustum(_) | PrimShape::Torus { .. } => {
                 let mut best: Option<ShapeHit> = None;
                 self.hits(ray, t_min, t_max, &mut |t, sub| {
@@ -307,6 +310,7 @@ impl PrimShape {
                 f(t, 0);
                 true
             }),
+            PrimShape::Isosurface(i) => i.hits(ray, t_min, t_max, false, f),
             _ => {
                 if let Some((t, _, sub)) = self.intersect(ray, t_min, t_max) {
                     f(t, sub)
@@ -337,6 +341,7 @@ impl PrimShape {
             PrimShape::Csg(_) => DVec3::Y,
             PrimShape::Blob(b) => b.normal(p),
             PrimShape::Superellipsoid(s) => s.normal(p),
+            PrimShape::Isosurface(i) => i.normal(p, sub),
         }
     }
 
@@ -391,6 +396,7 @@ impl PrimShape {
             PrimShape::Csg(c) => c.inside(p),
             PrimShape::Blob(b) => b.inside(p),
             PrimShape::Superellipsoid(s) => s.inside(p),
+            PrimShape::Isosurface(i) => i.inside(p),
             PrimShape::Triangle { .. }
             | PrimShape::SmoothTriangle(_)
             | PrimShape::Disc { .. }
@@ -430,6 +436,10 @@ impl PrimShape {
             PrimShape::Csg(c) => return c.bounds(),
             PrimShape::Blob(b) => return b.bounds(),
             PrimShape::Superellipsoid(s) => s.bounds(),
+            PrimShape::Isosurface(i) => {
+                let (lo, hi) = i.container.bounds();
+                Aabb::new(lo, hi)
+            }
         })
     }
 }

@@ -106,3 +106,8 @@ pub const KEYS_OUT_OF_ORDER: &str = "rts::anim::keys_out_of_order";
 pub const KEY_MIXED_TYPES: &str = "rts::anim::mixed_key_types";
 /// A key outside the timeline's clock range (warning).
 pub const KEY_OUTSIDE_TIMELINE: &str = "rts::anim::key_outside_timeline";
+
+/// A `function { }` too complex to compile (stack, call or inline depth).
+pub const FUNCTION_LIMIT: &str = "rts::limit::function_complexity";
+/// An isosurface's `max_gradient` is below the gradient measured in its container.
+pub const MAX_GRADIENT: &str = "rts::lint::max_gradient";

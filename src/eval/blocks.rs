@@ -44,11 +44,12 @@ pub(crate) const BLOCKS: &[&str] = &[
     "animation",
     "camera_path",
     "path_tracing",
+    "function",
+    "contained_by",
 ];
 
 /// POV-Ray blocks that a later release implements.
 const LATER_BLOCKS: &[&str] = &[
-    "isosurface",
     "julia_fractal",
     "sphere_sweep",
     "bicubic_patch",
@@ -96,6 +97,10 @@ impl Evaluator<'_> {
             };
             return Err(d.into());
         }
+        if kw == "function" {
+            // Its body is compiled, not evaluated.
+            return self.function_block(b).map(Some);
+        }
         if kw == "camera_path" {
             // Its keyframes stay curves: it reads its items itself.
             return self.camera_path(b).map(Some);
@@ -125,8 +130,8 @@ impl Evaluator<'_> {
             kw if OBJECT_BLOCKS.contains(&kw) => {
                 Value::Object(std::sync::Arc::new(self.object(&mut c)?))
             }
-            "clipped_by" | "bounded_by" | "vertex_vectors" | "normal_vectors" | "uv_vectors"
-            | "face_indices" | "normal_indices" | "uv_indices" | "texture_list" => {
+            "clipped_by" | "bounded_by" | "contained_by" | "vertex_vectors" | "normal_vectors"
+            | "uv_vectors" | "face_indices" | "normal_indices" | "uv_indices" | "texture_list" => {
                 self.list_block(&mut c)?
             }
             "texture" => Value::Texture(std::sync::Arc::new(self.texture(&mut c)?)),

@@ -377,6 +377,9 @@ impl Evaluator<'_> {
                 .into()),
             };
         }
+        if let Some(Value::Function(f)) = self.scope.get(name).map(|b| b.value.clone()) {
+            return self.call_function(&f, name, args, span);
+        }
         if let Some(Value::Spline(s)) = self.scope.get(name).map(|b| b.value.clone()) {
             let mut vals = Vec::with_capacity(args.len());
             for a in args {
@@ -452,18 +455,34 @@ impl Evaluator<'_> {
 }
 
 /// For an undeclared name like POV-Ray's functions.inc ones (`f_` and a lower-case
-/// letter: `f_noise3d`, `f_rounded_box`): the diagnostic that says functions are
-/// not implemented, instead of "unknown identifier".
+/// letter: `f_noise3d`, `f_rounded_box`): the diagnostic that says to include
+/// functions.inc when ours declares it, else that rts does not provide it yet,
+/// instead of "unknown identifier".
 pub(crate) fn pov_function(name: &str, span: Span) -> Option<Diagnostic> {
     let rest = name.strip_prefix("f_")?;
-    rest.starts_with(|c: char| c.is_ascii_lowercase()).then(|| {
+    if !rest.starts_with(|c: char| c.is_ascii_lowercase()) {
+        return None;
+    }
+    let ours = super::include::STDLIB
+        .iter()
+        .find(|(n, _)| *n == "functions.inc")
+        .is_some_and(|(_, text)| text.contains(&format!("#declare {name} =")));
+    Some(if ours {
+        Diagnostic::error(
+            codes::UNKNOWN_IDENTIFIER,
+            span,
+            format!("`{name}` is declared in functions.inc"),
+        )
+        .with_label("not declared")
+        .with_help("add `#include \"functions.inc\"` before using it")
+    } else {
         Diagnostic::error(
             codes::UNSUPPORTED,
             span,
-            format!("`{name}` looks like one of POV-Ray's functions.inc functions; functions are not implemented in rts yet"),
+            format!("`{name}` looks like one of POV-Ray's functions.inc functions, which rts does not provide yet"),
         )
         .with_label("not implemented yet")
-        .with_help("see docs/language.md for what this release supports")
+        .with_help("see docs/language.md for the functions rts's functions.inc declares")
     })
 }
 

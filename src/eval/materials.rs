@@ -242,6 +242,7 @@ impl Evaluator<'_> {
         // The pattern written in this block, with its textures and transforms.
         let mut pat: Option<TexturePatternSpec> = None;
         while let Some(tok) = c.next() {
+            let tok = self.function_pattern_token(tok);
             // `pigment { … }`, `finish { … }`, `normal { … }` modify the texture's own.
             let tok = match tok {
                 Tok::Deferred(b) => {
@@ -449,7 +450,7 @@ impl Evaluator<'_> {
             transform: Transform::IDENTITY,
             failed: conflict.is_some() || r.is_err(),
         };
-        if p.spec.kind.is_some_and(|k| k.is_list()) {
+        if p.spec.kind.as_ref().is_some_and(|k| k.is_list()) {
             let max = list_len(kw);
             let mut told = false;
             loop {
@@ -514,7 +515,7 @@ impl Evaluator<'_> {
             .with_help(help)
             .into());
         };
-        if p.spec.kind.is_some_and(|k| k.is_list()) {
+        if p.spec.kind.as_ref().is_some_and(|k| k.is_list()) {
             let (count, blocks) = if list_len(p.keyword) == 3 {
                 ("three", "texture { … } texture { … } texture { … }")
             } else {
@@ -551,7 +552,7 @@ impl Evaluator<'_> {
 
     /// The patterned texture `p` describes, once its block is read.
     fn finish_patterned(&mut self, mut p: TexturePatternSpec) -> R<Texture> {
-        let Some(kind) = p.spec.kind.filter(|_| !p.failed) else {
+        let Some(kind) = p.spec.kind.clone().filter(|_| !p.failed) else {
             return Err(Fail::silent());
         };
         let entries = if kind.is_list() {
@@ -712,12 +713,13 @@ impl Evaluator<'_> {
         let mut modified = false;
         let mut uv_mapping = false;
         while let Some(tok) = c.next() {
+            let tok = self.function_pattern_token(tok);
             let r: R<()> = match tok {
                 Tok::Val(Value::Pigment(p), _) if !pattern_given => {
                     pig = (*p).clone();
                     pattern_given = true;
                     if let Pattern::Mapped(m) = &pig.pattern {
-                        spec.kind = Some(m.kind);
+                        spec.kind = Some(m.kind.clone());
                         spec.mods = m.mods;
                         spec.wave = Some(m.mods.wave);
                         match &m.map {
@@ -844,7 +846,7 @@ impl Evaluator<'_> {
             }
         }
         if modified {
-            if let Some(kind) = spec.kind {
+            if let Some(kind) = spec.kind.clone() {
                 pig.pattern = self.build_pattern(kind, &mut spec);
             } else if let Some(map) = spec.map.take() {
                 // A map with no pattern: POV-Ray's default pattern is `bozo`... but a
@@ -892,11 +894,12 @@ impl Evaluator<'_> {
         let mut bump = n.as_ref().map_or(0.5, |x| x.bump_size);
         let mut transform = n.as_ref().and_then(|x| x.transform.clone());
         if let Some(x) = &n {
-            spec.kind = Some(x.kind);
+            spec.kind = Some(x.kind.clone());
             spec.mods = x.mods;
             spec.wave = Some(x.mods.wave);
         }
         while let Some(tok) = c.next() {
+            let tok = self.function_pattern_token(tok);
             let r: R<()> = match tok {
                 Tok::Kw(kw, _) if PATTERNS.contains(&kw) => {
                     let r = self.pattern_kw(kw, c, &mut spec, false);
@@ -925,7 +928,7 @@ impl Evaluator<'_> {
                 self.report(f);
             }
         }
-        let kind = spec.kind.unwrap_or(PatternKind::Bumps);
+        let kind = spec.kind.clone().unwrap_or(PatternKind::Bumps);
         let mods = spec.final_mods();
         Ok(Normal {
             kind,

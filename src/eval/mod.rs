@@ -14,6 +14,7 @@ mod camera_path;
 mod cursor;
 mod directives;
 mod exprs;
+pub mod function;
 mod import;
 mod include;
 mod items;
@@ -204,6 +205,7 @@ pub fn eval_cached(
         defer_material_blocks: false,
         built_objects: Default::default(),
         blob_items: false,
+        pending_function: None,
     };
     ev.define_command_line();
     ev.run_top(&file.items);
@@ -276,6 +278,8 @@ pub(crate) struct Evaluator<'a> {
     /// Set while the items of a `blob` are read: there a `sphere` or `cylinder`
     /// block is a blob component (see `blob.rs`).
     pub(crate) blob_items: bool,
+    /// A `function { }` met as a pattern, until the pattern reader takes it.
+    pub(crate) pending_function: Option<Arc<function::Function>>,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps

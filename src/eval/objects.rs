@@ -68,6 +68,7 @@ pub(crate) const OBJECT_BLOCKS: &[&str] = &[
     "merge",
     "intersection",
     "difference",
+    "isosurface",
 ];
 
 impl Evaluator<'_> {
@@ -286,6 +287,11 @@ impl Evaluator<'_> {
             }
             t => t,
         };
+        if let (Tok::Kw(kw, _), Shape::Isosurface(iso)) = (&tok, &mut obj.shape) {
+            if super::function::isosurface::ISOSURFACE_ITEMS.contains(kw) {
+                return self.isosurface_late(iso, tok, c);
+            }
+        }
         match tok {
             Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => {
                 let t = self.transform_kw(kw, span, c)?;

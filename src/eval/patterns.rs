@@ -13,7 +13,7 @@ use std::sync::Arc;
 pub(crate) const PATTERNS: &[&str] = &[
     "checker", "hexagon", "brick", "gradient", "radial", "onion", "leopard", "spotted", "bozo",
     "marble", "wood", "granite", "agate", "wrinkles", "ripples", "waves", "bumps", "dents",
-    "crackle",
+    "crackle", "function",
 ];
 
 /// Pattern modifiers.
@@ -53,7 +53,7 @@ impl PatternSpec {
     /// The modifiers with the pattern's own default wave.
     pub(crate) fn final_mods(&self) -> PatternMods {
         let mut m = self.mods;
-        let kind = self.kind.unwrap_or(PatternKind::Bozo);
+        let kind = self.kind.clone().unwrap_or(PatternKind::Bozo);
         m.wave = self.wave.unwrap_or(match kind {
             PatternKind::Marble | PatternKind::Wood => Wave::Triangle,
             _ => Wave::Ramp,
@@ -167,9 +167,10 @@ impl Evaluator<'_> {
             "ripples" => PatternKind::Ripples,
             "waves" => PatternKind::Waves,
             "bumps" => PatternKind::Bumps,
+            "function" => self.take_function_pattern(c)?,
             _ => PatternKind::Dents,
         };
-        spec.kind = Some(kind);
+        spec.kind = Some(kind.clone());
         if kind.is_list() && entries {
             self.list_entries(c, spec)?;
         }

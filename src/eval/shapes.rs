@@ -276,6 +276,7 @@ impl Evaluator<'_> {
             "sor" => self.sor(c)?,
             "text" => self.text(c)?,
             "superellipsoid" => self.superellipsoid(c)?,
+            "isosurface" => self.isosurface_shape(c)?,
             _ => return Ok(None),
         };
         Ok(Some(Object::new(shape, span)))

@@ -169,6 +169,8 @@ pub enum Value {
     Macro(Rc<MacroDef>),
     /// A `spline { }`, called as `S(t)`.
     Spline(Rc<super::spline::Spline>),
+    /// A `function { }`, called as `F(x, y, z)`.
+    Function(Arc<super::function::Function>),
     /// The value of something whose evaluation failed (already reported); using it
     /// fails silently so one error does not cascade.
     Poison,
@@ -206,6 +208,7 @@ impl Value {
             Value::TextureMap(_) => "a texture map",
             Value::Macro(_) => "a macro",
             Value::Spline(_) => "a spline",
+            Value::Function(_) => "a function",
             Value::Poison => "an erroneous value",
         }
     }

@@ -1148,7 +1148,7 @@ pub const DOCS: &[Doc] = &[
     kw(
         "threshold",
         "threshold T",
-        "The field value on a blob's surface (default 1): inside where the summed field is above it.",
+        "The surface's value: a blob's surface is where the summed field equals T (default 1; inside above it), an isosurface's where the function equals T (default 0; inside below it).",
     ),
     kw(
         "strength",
@@ -1165,10 +1165,50 @@ pub const DOCS: &[Doc] = &[
         "hierarchy [on|off]",
         "Accepted on a blob: rts always bounds many components with a hierarchy of its own.",
     ),
-    later(
+    kw(
         "isosurface",
-        "isosurface { function { … } … }",
-        "A surface where a function is zero.",
+        "isosurface { function { … } [contained_by { box { … } | sphere { … } }] [threshold T] [accuracy A] [max_gradient G] [open] [max_trace N | all_intersections] … }",
+        "The surface where a function equals its threshold, inside where it is below, cut by its container (a box from <-1,-1,-1> to <1,1,1> unless given).",
+    ),
+    kw(
+        "contained_by",
+        "contained_by { box { A, B } | sphere { C, R } }",
+        "The region an isosurface is searched in; where the function is below the threshold on it, its surface shows (unless `open`).",
+    ),
+    kw(
+        "accuracy",
+        "accuracy A",
+        "How closely an isosurface's root is found along the ray (default 0.001).",
+    ),
+    kw(
+        "max_gradient",
+        "max_gradient G",
+        "An upper bound of the isosurface function's slope (default 1.1): rts steps along a ray no further than the function's distance to the threshold divided by G; too low a value misses surfaces (rts warns with the measured slope).",
+    ),
+    kw(
+        "evaluate",
+        "evaluate P0, P1, P2",
+        "POV-Ray's adaptive max_gradient for isosurfaces: rts takes P0 times P1 as max_gradient.",
+    ),
+    kw(
+        "all_intersections",
+        "all_intersections",
+        "An isosurface reports every crossing along a ray (needed for a closed cut in CSG).",
+    ),
+    kw(
+        "max_trace",
+        "max_trace N",
+        "How many crossings along a ray an isosurface reports (default 1, as in POV-Ray).",
+    ),
+    kw(
+        "function",
+        "function { EXPR } | function(A, B, …) { EXPR } | function { pigment { … } } | function { pattern { … } }",
+        "A user-defined function of x, y, z (or of the named parameters), compiled once; call it as F(…) in expressions, use it as a pattern or as an isosurface's function.",
+    ),
+    kw(
+        "pattern",
+        "function { pattern { PATTERN modifiers } }",
+        "A function giving a pattern's value (0 to 1) at <x, y, z>.",
     ),
     later(
         "julia_fractal",

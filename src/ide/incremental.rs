@@ -161,6 +161,10 @@ impl Shift {
             },
             items: self.items(&b.items),
             span: self.span(b.span),
+            params: b
+                .params
+                .as_ref()
+                .map(|ps| ps.iter().map(|(n, s)| (*n, self.span(*s))).collect()),
         }
     }
 

@@ -14,7 +14,7 @@ mod focal_blur;
 mod lights;
 mod passes;
 pub mod path;
-mod pigment;
+pub(crate) mod pigment;
 mod sampler;
 mod shade;
 mod stats;

@@ -315,7 +315,7 @@ mod tests {
         for kind in kinds {
             for freq in [1.0, 3.0] {
                 let nrm = Normal {
-                    kind,
+                    kind: kind.clone(),
                     mods: PatternMods {
                         frequency: freq,
                         ..PatternMods::default()

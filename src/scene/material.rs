@@ -208,7 +208,7 @@ pub struct Mapped {
 
 /// The pattern functions (`gradient`, `bozo`, …). List patterns (`hexagon`,
 /// `brick`) select an entry by index; the others give a value in [0, 1].
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum PatternKind {
     /// `checker` (as a list pattern inside a normal or with pigment entries).
     Checker,
@@ -259,6 +259,9 @@ pub enum PatternKind {
     Bumps,
     /// `dents`: as a normal, cubed noise dents.
     Dents,
+    /// `function { … }`: a user function of x, y, z (wrapped into [0, 1] like
+    /// `gradient`, as POV-Ray does).
+    Function(Arc<crate::eval::function::Function>),
 }
 
 impl PatternKind {

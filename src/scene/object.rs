@@ -219,6 +219,8 @@ pub enum Shape {
         /// The north-south exponent (> 0).
         n: f64,
     },
+    /// `isosurface { function { … } contained_by { … } … }`.
+    Isosurface(Arc<crate::build::shapes::isosurface::Isosurface>),
     /// `merge`, `intersection` or `difference` (a `union` is [`Shape::Union`]).
     Csg {
         /// Which operation.

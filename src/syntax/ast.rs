@@ -64,6 +64,9 @@ pub struct Block {
     pub items: Vec<Item>,
     /// From the keyword to the closing brace.
     pub span: Span,
+    /// The parameter names of `function(a, b) { … }` with where each was written;
+    /// `None` for every other block (and for `function { … }`).
+    pub params: Option<Vec<(Sym, Span)>>,
 }
 
 /// `[ items ]`.

@@ -65,11 +65,24 @@ impl Lowerer {
         let span = self.span(&p);
         let mut inner = p.into_inner();
         let keyword = self.keyword(inner.next().expect("block keyword"));
+        let mut params = None;
+        if inner
+            .peek()
+            .is_some_and(|q| q.as_rule() == Rule::func_params)
+        {
+            let list = inner.next().expect("function parameters");
+            params = Some(
+                list.into_inner()
+                    .map(|n| (intern(n.as_str()), self.span(&n)))
+                    .collect(),
+            );
+        }
         let items = self.items(inner);
         Block {
             keyword,
             items,
             span,
+            params,
         }
     }
 

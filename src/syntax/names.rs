@@ -11,6 +11,8 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         Rule::WHITESPACE | Rule::COMMENT | Rule::line_comment | Rule::block_comment => return None,
         Rule::file | Rule::one_item | Rule::only_trivia | Rule::item | Rule::body => "a statement",
         Rule::block => "a block",
+        Rule::func_params => "a parameter list",
+        Rule::fn_keyword => "`function`",
         Rule::bracket => "`[`",
         Rule::comma => "`,`",
         Rule::semicolon => "`;`",

@@ -4,6 +4,7 @@
 pub mod blob;
 pub mod flat;
 pub mod lathe;
+pub mod isosurface;
 pub mod poly;
 pub mod prism;
 pub mod quadric;

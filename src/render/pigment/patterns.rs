@@ -127,6 +127,7 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
             };
             (0.5 + spread * sum).clamp(0.0, 1.0)
         }
+        PatternKind::Function(f) => f.eval3(p),
         PatternKind::Checker | PatternKind::Hexagon | PatternKind::Brick { .. } => 0.0,
     }
 }

@@ -1,0 +1,366 @@
+//! `isosurface { function { … } contained_by { … } … }`: the surface where a
+//! function equals its threshold, found along each ray inside the container.
+//!
+//! The function is bounded in slope by `max_gradient` (a Lipschitz bound), so
+//! at a point where it is `|f - threshold|` away from the threshold the surface
+//! is at least `|f - threshold| / max_gradient` away: the march steps that far
+//! (at least `accuracy`), and where the sign changes it bisects to `accuracy`.
+//! Inside is where the function is below the threshold (within the container);
+//! where the container's surface is inside, it shows (unless `open`).
+
+use crate::build::Ray;
+use crate::eval::function::Function;
+use glam::DVec3;
+use std::sync::Arc;
+
+/// The region an isosurface is searched in.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Container {
+    /// `contained_by { box { MIN, MAX } }` (corners sorted).
+    Box {
+        /// Lowest corner.
+        min: DVec3,
+        /// Highest corner.
+        max: DVec3,
+    },
+    /// `contained_by { sphere { CENTER, RADIUS } }`.
+    Sphere {
+        /// Centre.
+        center: DVec3,
+        /// Radius.
+        radius: f64,
+    },
+}
+
+impl Container {
+    /// Entry and exit parameters of `ray` through the container.
+    pub fn span(&self, ray: &Ray) -> Option<(f64, f64)> {
+        match *self {
+            Container::Box { min, max } => {
+                let inv = ray.dir.recip();
+                let t0 = (min - ray.origin) * inv;
+                let t1 = (max - ray.origin) * inv;
+                let near = t0.min(t1).max_element();
+                let far = t0.max(t1).min_element();
+                (near <= far).then_some((near, far))
+            }
+            Container::Sphere { center, radius } => {
+                let oc = ray.origin - center;
+                let a = ray.dir.length_squared();
+                let b = oc.dot(ray.dir);
+                let perp = oc - ray.dir * (b / a);
+                let disc = radius * radius - perp.length_squared();
+                if disc < 0.0 {
+                    return None;
+                }
+                let root = (a * disc).sqrt();
+                Some(((-b - root) / a, (-b + root) / a))
+            }
+        }
+    }
+
+    /// Whether `p` is strictly inside.
+    pub fn contains(&self, p: DVec3) -> bool {
+        match *self {
+            Container::Box { min, max } => p.cmpgt(min).all() && p.cmplt(max).all(),
+            Container::Sphere { center, radius } => (p - center).length_squared() < radius * radius,
+        }
+    }
+
+    /// The outward normal of the container's surface near `p`.
+    pub fn normal(&self, p: DVec3) -> DVec3 {
+        match *self {
+            Container::Box { min, max } => {
+                let size = (max - min).max(DVec3::splat(f64::MIN_POSITIVE));
+                let mut best = (f64::INFINITY, DVec3::X);
+                for axis in 0..3 {
+                    let e = DVec3::AXES[axis];
+                    let lo = (p[axis] - min[axis]).abs() / size[axis];
+                    let hi = (p[axis] - max[axis]).abs() / size[axis];
+                    if lo < best.0 {
+                        best = (lo, -e);
+                    }
+                    if hi < best.0 {
+                        best = (hi, e);
+                    }
+                }
+                best.1
+            }
+            Container::Sphere { center, .. } => p - center,
+        }
+    }
+
+    /// The container's bounding box.
+    pub fn bounds(&self) -> (DVec3, DVec3) {
+        match *self {
+            Container::Box { min, max } => (min, max),
+            Container::Sphere { center, radius } => {
+                (center - DVec3::splat(radius), center + DVec3::splat(radius))
+            }
+        }
+    }
+}
+
+/// An isosurface as written (plain data) and ready to intersect.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Isosurface {
+    /// The function of x, y, z.
+    pub function: Arc<Function>,
+    /// Where the surface is searched.
+    pub container: Container,
+    /// The surface is where the function equals this (default 0).
+    pub threshold: f64,
+    /// How closely roots are found (default 0.001).
+    pub accuracy: f64,
+    /// The bound on the function's slope used to step (default 1.1).
+    pub max_gradient: f64,
+    /// `open`: the container's surface never shows.
+    pub open: bool,
+    /// `max_trace N`: how many crossings a ray reports (default 1, as in POV-Ray;
+    /// 0 for `all_intersections`). In CSG fewer crossings than the surface has
+    /// leave the same see-through gaps POV-Ray shows.
+    pub max_trace: u32,
+}
+
+/// Most function evaluations one ray may spend in one isosurface (a function
+/// far steeper than its `max_gradient` promise cannot hang the render).
+const MAX_STEPS: usize = 1 << 16;
+
+impl Isosurface {
+    /// The function minus the threshold at `p` (NaN reads as outside).
+    #[inline]
+    fn g(&self, p: DVec3) -> f64 {
+        let v = self.function.eval3(p) - self.threshold;
+        if v.is_nan() {
+            f64::MAX
+        } else {
+            v
+        }
+    }
+
+    /// Every crossing in `(t_min, t_max)`, in order, with its part (0 the
+    /// function's surface, 1 the container's); stops after the first when
+    /// `first_only`.
+    pub fn hits(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        first_only: bool,
+        f: &mut dyn FnMut(f64, u32),
+    ) {
+        let limit = if first_only || self.max_trace == 1 {
+            1
+        } else if self.max_trace == 0 {
+            usize::MAX
+        } else {
+            self.max_trace as usize
+        };
+        let mut found = 0usize;
+        let Some((t0, t1)) = self.container.span(ray) else {
+            return;
+        };
+        let a = t0.max(t_min);
+        let b = t1.min(t_max);
+        if a >= b {
+            return;
+        }
+        let len = ray.dir.length();
+        if len == 0.0 || !len.is_finite() {
+            return;
+        }
+        let min_step = self.accuracy.max(1e-9) / len;
+        let slope = self.max_gradient.max(1e-9) * len;
+        let mut t = a;
+        let mut gt = self.g(ray.at(t));
+        if t0 > t_min && !self.open && gt < 0.0 {
+            f(t0, 1);
+            found += 1;
+            if found >= limit {
+                return;
+            }
+        }
+        let mut steps = 0;
+        while t < b && steps < MAX_STEPS {
+            steps += 1;
+            let step = (gt.abs() / slope).max(min_step);
+            let tn = (t + step).min(b);
+            let gn = self.g(ray.at(tn));
+            if (gt < 0.0) != (gn < 0.0) {
+                // Bisect to the accuracy.
+                let (mut lo, mut hi, mut glo) = (t, tn, gt);
+                while hi - lo > min_step * 0.5 && steps < MAX_STEPS {
+                    steps += 1;
+                    let mid = 0.5 * (lo + hi);
+                    let gm = self.g(ray.at(mid));
+                    if (gm < 0.0) == (glo < 0.0) {
+                        lo = mid;
+                        glo = gm;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                let root = 0.5 * (lo + hi);
+                // A root within twice the accuracy of the ray's start is the
+                // surface the ray leaves (found only that closely): skipped, as
+                // POV-Ray does, so surfaces do not shadow themselves.
+                if root > t_min && root < t_max && root * len > 2.0 * self.accuracy {
+                    f(root, 0);
+                    found += 1;
+                    if found >= limit {
+                        return;
+                    }
+                }
+            }
+            t = tn;
+            gt = gn;
+        }
+        if t1 < t_max && !self.open && gt < 0.0 && t1 > t_min {
+            f(t1, 1);
+        }
+    }
+
+    /// The nearest crossing in `(t_min, t_max)` and its part.
+    pub fn nearest(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(f64, u32)> {
+        let mut best = None;
+        self.hits(ray, t_min, t_max, true, &mut |t, sub| {
+            if best.is_none() {
+                best = Some((t, sub));
+            }
+        });
+        best
+    }
+
+    /// The outward normal at `p` on part `sub`: the function's gradient, or the
+    /// container's normal.
+    pub fn normal(&self, p: DVec3, sub: u32) -> DVec3 {
+        if sub == 1 {
+            return self.container.normal(p);
+        }
+        let h = (self.accuracy * 0.5).max(1e-7);
+        let gx = self.function.eval3(p + DVec3::X * h) - self.function.eval3(p - DVec3::X * h);
+        let gy = self.function.eval3(p + DVec3::Y * h) - self.function.eval3(p - DVec3::Y * h);
+        let gz = self.function.eval3(p + DVec3::Z * h) - self.function.eval3(p - DVec3::Z * h);
+        let n = DVec3::new(gx, gy, gz);
+        if n.length_squared() > 0.0 && n.is_finite() {
+            n
+        } else {
+            self.container.normal(p)
+        }
+    }
+
+    /// Whether `p` is inside: in the container and below the threshold.
+    pub fn inside(&self, p: DVec3) -> bool {
+        self.container.contains(p) && self.g(p) < 0.0
+    }
+
+    /// The largest slope of the function measured on a grid of points in the
+    /// container (central differences), for the `max_gradient` warning.
+    pub fn measured_gradient(&self) -> f64 {
+        let (lo, hi) = self.container.bounds();
+        let size = hi - lo;
+        let n = 8;
+        let h = size.max_element() * 1e-4;
+        let mut best: f64 = 0.0;
+        for i in 0..n {
+            for j in 0..n {
+                for k in 0..n {
+                    let c = lo + size * (DVec3::new(i as f64, j as f64, k as f64) + 0.5) / n as f64;
+                    if !self.container.contains(c) {
+                        continue;
+                    }
+                    let f = |q: DVec3| self.function.eval3(q);
+                    let g = DVec3::new(
+                        f(c + DVec3::X * h) - f(c - DVec3::X * h),
+                        f(c + DVec3::Y * h) - f(c - DVec3::Y * h),
+                        f(c + DVec3::Z * h) - f(c - DVec3::Z * h),
+                    ) / (2.0 * h);
+                    let l = g.length();
+                    if l.is_finite() {
+                        best = best.max(l);
+                    }
+                }
+            }
+        }
+        best
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::eval::function::{Body, Op};
+
+    fn sphere_fn() -> Arc<Function> {
+        // sqrt(x*x + y*y + z*z) - 1
+        Arc::new(Function {
+            arity: 3,
+            body: Body::Float(vec![
+                Op::Param(0),
+                Op::Param(0),
+                Op::Mul,
+                Op::Param(1),
+                Op::Param(1),
+                Op::Mul,
+                Op::Add,
+                Op::Param(2),
+                Op::Param(2),
+                Op::Mul,
+                Op::Add,
+                Op::F1(f64::sqrt),
+                Op::Const(1.0),
+                Op::Sub,
+            ]),
+            depth: 1,
+        })
+    }
+
+    fn iso(open: bool, r: f64) -> Isosurface {
+        Isosurface {
+            function: sphere_fn(),
+            container: Container::Box {
+                min: DVec3::splat(-r),
+                max: DVec3::splat(r),
+            },
+            threshold: 0.0,
+            accuracy: 1e-4,
+            max_gradient: 1.1,
+            open,
+            max_trace: 0,
+        }
+    }
+
+    #[test]
+    fn unit_sphere_roots() {
+        let s = iso(false, 2.0);
+        let ray = Ray::new(DVec3::new(0.1, 0.2, -5.0), DVec3::Z);
+        let mut ts = Vec::new();
+        s.hits(&ray, 0.0, f64::INFINITY, false, &mut |t, sub| {
+            ts.push((t, sub))
+        });
+        let d = (1.0f64 - 0.05).sqrt();
+        assert_eq!(ts.len(), 2, "{ts:?}");
+        assert!((ts[0].0 - (5.0 - d)).abs() < 1e-4 && ts[0].1 == 0);
+        assert!((ts[1].0 - (5.0 + d)).abs() < 1e-4);
+        let n = s.normal(ray.at(ts[0].0), 0).normalize();
+        assert!((n - ray.at(ts[0].0).normalize()).length() < 1e-3);
+        assert!(s.inside(DVec3::ZERO) && !s.inside(DVec3::splat(0.9)));
+    }
+
+    #[test]
+    fn container_cuts_the_surface() {
+        // A container smaller than the sphere: the box's faces show.
+        let s = iso(false, 0.5);
+        let ray = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z * 2.0);
+        let (t, sub) = s.nearest(&ray, 0.0, f64::INFINITY).unwrap();
+        assert!((t - 2.25).abs() < 1e-9 && sub == 1);
+        let open = iso(true, 0.5);
+        assert!(open.nearest(&ray, 0.0, f64::INFINITY).is_none());
+    }
+
+    #[test]
+    fn measured_gradient_of_distance_is_one() {
+        let g = iso(false, 2.0).measured_gradient();
+        assert!((g - 1.0).abs() < 1e-3, "{g}");
+    }
+}
