@@ -3,8 +3,8 @@
 
 pub mod blob;
 pub mod flat;
-pub mod lathe;
 pub mod isosurface;
+pub mod lathe;
 pub mod poly;
 pub mod prism;
 pub mod quadric;
