@@ -515,7 +515,7 @@ fn polyhedron_bounds(planes: &[(DVec3, f64)]) -> Option<Aabb> {
 }
 
 /// Normal of the box face nearest to `p`, measured relative to the box size.
-fn box_normal(min: DVec3, max: DVec3, p: DVec3) -> DVec3 {
+pub(crate) fn box_normal(min: DVec3, max: DVec3, p: DVec3) -> DVec3 {
     let size = (max - min).max(DVec3::splat(f64::MIN_POSITIVE));
     let mut best = (f64::INFINITY, DVec3::X);
     for axis in 0..3 {

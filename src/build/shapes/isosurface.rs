@@ -70,22 +70,7 @@ impl Container {
     /// The outward normal of the container's surface near `p`.
     pub fn normal(&self, p: DVec3) -> DVec3 {
         match *self {
-            Container::Box { min, max } => {
-                let size = (max - min).max(DVec3::splat(f64::MIN_POSITIVE));
-                let mut best = (f64::INFINITY, DVec3::X);
-                for axis in 0..3 {
-                    let e = DVec3::AXES[axis];
-                    let lo = (p[axis] - min[axis]).abs() / size[axis];
-                    let hi = (p[axis] - max[axis]).abs() / size[axis];
-                    if lo < best.0 {
-                        best = (lo, -e);
-                    }
-                    if hi < best.0 {
-                        best = (hi, e);
-                    }
-                }
-                best.1
-            }
+            Container::Box { min, max } => crate::build::shape::box_normal(min, max, p),
             Container::Sphere { center, .. } => p - center,
         }
     }

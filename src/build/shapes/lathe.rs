@@ -19,7 +19,7 @@
 //! height y is inside when r is at least the curve's smallest radius and a
 //! half-line from `<r, y>` towards +x crosses the curve an odd number of times.
 
-use super::prism::{self, at, closest, crossings, curve_box, roots01, tangent, Curve, Spline};
+use super::prism::{self, at, closest, curve_box, roots01, tangent, Curve, Spline};
 use super::revolve::{mul, roots_in, MAX_DEGREE};
 use crate::build::{Aabb, Ray};
 use glam::{DVec2, DVec3};
@@ -209,19 +209,7 @@ impl Lathe {
     /// Whether `<r, y>` (radius, height) is inside: at least the smallest radius
     /// and an odd number of crossings towards +x.
     fn inside2(&self, q: DVec2) -> bool {
-        if q.x < self.r_min {
-            return false;
-        }
-        let mut odd = false;
-        for (c, b) in self.curves.iter().zip(&self.boxes) {
-            if q.y < b.0.y || q.y > b.1.y || q.x > b.1.x {
-                continue;
-            }
-            if crossings(c, q) % 2 == 1 {
-                odd = !odd;
-            }
-        }
-        odd
+        q.x >= self.r_min && prism::even_odd(&self.curves, &self.boxes, q)
     }
 
     /// Whether `p` is strictly inside (POV-Ray's rule, see the module notes).

@@ -306,16 +306,7 @@ impl Prism {
 
     /// Whether `q` is inside the outline (even-odd rule).
     pub fn inside2(&self, q: DVec2) -> bool {
-        let mut odd = false;
-        for (c, b) in self.curves.iter().zip(&self.boxes) {
-            if q.y < b.0.y || q.y > b.1.y || q.x > b.1.x {
-                continue;
-            }
-            if crossings(c, q) % 2 == 1 {
-                odd = !odd;
-            }
-        }
-        odd
+        even_odd(&self.curves, &self.boxes, q)
     }
 
     /// Every crossing of `ray` in `(t_min, t_max)` with its surface id, unordered.
@@ -518,6 +509,21 @@ pub(crate) fn curve_box(c: &Curve) -> (DVec2, DVec2) {
     }
     let pad = 1e-12 * (1.0 + lo.abs().max(hi.abs()).max_element());
     (lo - DVec2::splat(pad), hi + DVec2::splat(pad))
+}
+
+/// Whether `q` is inside the outline of `curves` (each within its box in
+/// `boxes`) by the even-odd rule: an odd number of crossings towards +x.
+pub(crate) fn even_odd(curves: &[Curve], boxes: &[(DVec2, DVec2)], q: DVec2) -> bool {
+    let mut odd = false;
+    for (c, b) in curves.iter().zip(boxes) {
+        if q.y < b.0.y || q.y > b.1.y || q.x > b.1.x {
+            continue;
+        }
+        if crossings(c, q) % 2 == 1 {
+            odd = !odd;
+        }
+    }
+    odd
 }
 
 /// How many times curve `c` crosses the half-line from `q` towards +x: sign
