@@ -463,7 +463,7 @@ impl Evaluator<'_> {
                     span,
                     format!("`open` is not valid in `{}`", c.block),
                 )
-                .with_help("`open` applies to cylinders, cones and prisms only")
+                .with_help("`open` applies to cylinders, cones, prisms, sors and isosurfaces only")
                 .into());
             }
             other => return Err(self.unexpected(c, &other, OBJECT_MODIFIERS)),
