@@ -10,6 +10,7 @@ use std::path::{Path, PathBuf};
 
 /// The built-in include files: name and text.
 pub const STDLIB: &[(&str, &str)] = &[
+    ("arrays.inc", include_str!("../stdlib/arrays.inc")),
     ("colors.inc", include_str!("../stdlib/colors.inc")),
     ("consts.inc", include_str!("../stdlib/consts.inc")),
     ("finish.inc", include_str!("../stdlib/finish.inc")),
@@ -18,10 +19,13 @@ pub const STDLIB: &[(&str, &str)] = &[
     ("golds.inc", include_str!("../stdlib/golds.inc")),
     ("math.inc", include_str!("../stdlib/math.inc")),
     ("metals.inc", include_str!("../stdlib/metals.inc")),
+    ("rand.inc", include_str!("../stdlib/rand.inc")),
     ("shapes.inc", include_str!("../stdlib/shapes.inc")),
     ("shapes2.inc", include_str!("../stdlib/shapes2.inc")),
     ("skies.inc", include_str!("../stdlib/skies.inc")),
+    ("stdinc.inc", include_str!("../stdlib/stdinc.inc")),
     ("stones.inc", include_str!("../stdlib/stones.inc")),
+    ("strings.inc", include_str!("../stdlib/strings.inc")),
     ("textures.inc", include_str!("../stdlib/textures.inc")),
     ("transforms.inc", include_str!("../stdlib/transforms.inc")),
     ("woodmaps.inc", include_str!("../stdlib/woodmaps.inc")),
