@@ -311,8 +311,12 @@ impl Evaluator<'_> {
         let mut frame = self.scope.take_top();
         for (param, name, at, given) in by_reference {
             // Only a parameter the macro assigned to (its binding no longer
-            // the argument's): the identifier may have been changed by name.
-            if let Some(b) = frame.remove(&param).filter(|b| b.span != given) {
+            // the argument's: the identifier may have been changed by name), or
+            // an array, whose items the macro may have set.
+            if let Some(b) = frame
+                .remove(&param)
+                .filter(|b| b.span != given || matches!(b.value, Value::Array(_)))
+            {
                 self.scope.set_in(at, name, b.value);
             }
         }
