@@ -446,7 +446,7 @@ impl PrimShape {
 
 /// The two roots of a ray with a sphere, ascending.
 #[inline]
-fn sphere_roots(center: DVec3, radius: f64, ray: &Ray) -> Option<(f64, f64)> {
+pub(crate) fn sphere_roots(center: DVec3, radius: f64, ray: &Ray) -> Option<(f64, f64)> {
     let oc = ray.origin - center;
     let a = ray.dir.length_squared();
     let b = oc.dot(ray.dir);

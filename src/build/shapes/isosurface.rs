@@ -45,16 +45,7 @@ impl Container {
                 (near <= far).then_some((near, far))
             }
             Container::Sphere { center, radius } => {
-                let oc = ray.origin - center;
-                let a = ray.dir.length_squared();
-                let b = oc.dot(ray.dir);
-                let perp = oc - ray.dir * (b / a);
-                let disc = radius * radius - perp.length_squared();
-                if disc < 0.0 {
-                    return None;
-                }
-                let root = (a * disc).sqrt();
-                Some(((-b - root) / a, (-b + root) / a))
+                crate::build::shape::sphere_roots(center, radius, ray)
             }
         }
     }
