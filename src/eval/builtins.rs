@@ -592,15 +592,12 @@ pub fn signature(name: &str) -> String {
 }
 
 /// POV-Ray's `str(V, L, P)`: at least |L| characters (zero-padded when L < 0), P
-/// decimals (P < 0: as many as needed).
+/// decimals (P < 0: six, as POV-Ray 3.7 prints).
 fn format_str(v: f64, l: f64, p: f64) -> String {
     let width = l.abs().min(64.0) as usize;
-    let body = if p < 0.0 {
-        let s = format!("{v}");
-        s
-    } else {
-        format!("{:.*}", p.min(20.0) as usize, v)
-    };
+    // A negative precision means POV-Ray's default of six decimals.
+    let decimals = if p < 0.0 { 6 } else { p.min(20.0) as usize };
+    let body = format!("{v:.decimals$}");
     if l < 0.0 {
         let neg = body.starts_with('-');
         let digits = body.trim_start_matches('-');

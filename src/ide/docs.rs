@@ -1416,7 +1416,7 @@ pub const DOCS: &[Doc] = &[
         "rand(STREAM)",
         "The next number in [0, 1) of a seed() stream.",
     ),
-    func("str", "str(A, WIDTH, DECIMALS)", "A float as text."),
+    func("str", "str(A, WIDTH, DECIMALS)", "A float as text: at least |WIDTH| characters (zero-padded when WIDTH < 0), DECIMALS decimals (six when negative, as in POV-Ray)."),
     func("concat", "concat(S1, S2, …)", "Joins strings."),
     func("strlen", "strlen(S)", "The length of a string."),
     func(
