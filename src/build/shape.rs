@@ -473,7 +473,7 @@ pub(crate) fn sphere_roots(center: DVec3, radius: f64, ray: &Ray) -> Option<(f64
 
 /// Entry and exit distances of a ray through a box.
 #[inline]
-fn box_span(min: DVec3, max: DVec3, ray: &Ray) -> Option<(f64, f64)> {
+pub(crate) fn box_span(min: DVec3, max: DVec3, ray: &Ray) -> Option<(f64, f64)> {
     let inv = ray.dir.recip();
     let t0 = (min - ray.origin) * inv;
     let t1 = (max - ray.origin) * inv;

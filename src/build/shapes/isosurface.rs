@@ -36,14 +36,7 @@ impl Container {
     /// Entry and exit parameters of `ray` through the container.
     pub fn span(&self, ray: &Ray) -> Option<(f64, f64)> {
         match *self {
-            Container::Box { min, max } => {
-                let inv = ray.dir.recip();
-                let t0 = (min - ray.origin) * inv;
-                let t1 = (max - ray.origin) * inv;
-                let near = t0.min(t1).max_element();
-                let far = t0.max(t1).min_element();
-                (near <= far).then_some((near, far))
-            }
+            Container::Box { min, max } => crate::build::shape::box_span(min, max, ray),
             Container::Sphere { center, radius } => {
                 crate::build::shape::sphere_roots(center, radius, ray)
             }
