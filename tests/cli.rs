@@ -446,3 +446,44 @@ fn seed_002_depth_and_normal_passes() {
     let s = n.get_pixel(48, 24).0;
     assert!(s[2] < 20, "{s:?}");
 }
+
+#[test]
+fn render_writes_files_and_check_does_not() {
+    let dir = std::env::temp_dir().join(format!("rts-fileio-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("scene.rts");
+    std::fs::write(
+        &scene,
+        "#fopen F \"written.txt\" write\n#write (F, \"n = \", 1/3, \", v = \", <1, 2, 3>, \"\\n\")\n#fclose F\n\
+         #fopen B \"written.bin\" write\n#write (B, uint8 65, sint16be -2)\n\
+         sphere { 0, 1 pigment { rgb 1 } } light_source { <0, 5, -5> rgb 1 }\n",
+    )
+    .unwrap();
+    let written = dir.join("written.txt");
+    let (code, _, err) = rts(&["check", scene.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!written.exists(), "rts check must not write files");
+    let out = dir.join("out.png");
+    let (code, _, err) = rts(&[
+        "render",
+        scene.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+        "--width",
+        "8",
+        "--height",
+        "8",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    // POV-Ray 3.7 writes the same bytes for the same directives.
+    assert_eq!(
+        std::fs::read_to_string(&written).unwrap(),
+        "n = 0.333333, v = <1,2,3> \n"
+    );
+    // A file left open is closed at the end of the scene.
+    assert_eq!(
+        std::fs::read(dir.join("written.bin")).unwrap(),
+        [65, 0xff, 0xfe]
+    );
+}

@@ -291,7 +291,11 @@ pub fn run(args: &RenderArgs) -> i32 {
         settings.sampling = Sampling::Centre;
     }
     let base = match common::eval_options(&args.scene, width, height) {
-        Ok(o) => o,
+        // A render runs the scene's #write directives for real.
+        Ok(o) => rts::eval::EvalOptions {
+            write_files: true,
+            ..o
+        },
         Err(e) => return usage(e),
     };
     let plan = match sequence::Plan::from_args(args) {

@@ -68,6 +68,9 @@ pub const USER_DEBUG: &str = "rts::scene::debug";
 pub const FILE_NOT_FOUND: &str = "rts::io::file_not_found";
 /// A file outside the folders a scene may read.
 pub const FILE_NOT_ALLOWED: &str = "rts::io::file_not_allowed";
+/// `#fopen`, `#read`, `#write` or `#fclose` misused: a file not open, opened
+/// the wrong way, unreadable data, or a file that cannot be written.
+pub const FILE_IO: &str = "rts::io::file_io";
 /// A file that includes itself, directly or not.
 pub const INCLUDE_CYCLE: &str = "rts::eval::include_cycle";
 /// Too many loop iterations.

@@ -95,6 +95,7 @@ pub const BUILTIN_NAMES: &[&str] = &[
     "bitwise_or",
     "bitwise_xor",
     "trace",
+    "strcmp",
 ];
 
 /// How many of [`BUILTIN_NAMES`] are constants.
@@ -445,6 +446,12 @@ impl Evaluator<'_> {
                 }
                 Ok(Value::Str(Rc::from(s)))
             }
+            "strcmp" => {
+                arity(2, 2)?;
+                let a = self.to_str(&args[0].0, args[0].1)?;
+                let b = self.to_str(&args[1].0, args[1].1)?;
+                Ok(Value::Float(strcmp(a.as_bytes(), b.as_bytes()) as f64))
+            }
             "strlen" => {
                 arity(1, 1)?;
                 Ok(Value::Float(
@@ -586,9 +593,20 @@ pub fn signature(name: &str) -> String {
         "dimension_size" => "dimension_size(ARRAY, DIMENSION)".into(),
         "defined" => "defined(NAME)".into(),
         "trace" => "trace(OBJECT, START, DIRECTION [, NORMAL])".into(),
+        "strcmp" => "strcmp(S1, S2)".into(),
         "bitwise_and" | "bitwise_or" | "bitwise_xor" => format!("{name}(A, B, …)"),
         _ => format!("{name}(A)"),
     }
+}
+
+/// C's `strcmp`, as POV-Ray returns it: the difference of the first bytes that
+/// differ (a missing byte counts as 0), 0 for equal strings.
+fn strcmp(a: &[u8], b: &[u8]) -> i32 {
+    let n = a.len().max(b.len());
+    (0..n)
+        .map(|i| i32::from(*a.get(i).unwrap_or(&0)) - i32::from(*b.get(i).unwrap_or(&0)))
+        .find(|d| *d != 0)
+        .unwrap_or(0)
 }
 
 /// POV-Ray's `str(V, L, P)`: at least |L| characters (zero-padded when L < 0), P

@@ -265,6 +265,23 @@ impl Evaluator<'_> {
                 }
                 Ok(())
             }
+            DirectiveKind::FOpen {
+                name,
+                name_span,
+                file,
+                mode,
+            } => self.fopen(*name, *name_span, file, *mode),
+            DirectiveKind::FClose { name, span } => self.fclose(*name, *span),
+            DirectiveKind::Read {
+                name,
+                name_span,
+                targets,
+            } => self.read_values(*name, *name_span, targets),
+            DirectiveKind::Write {
+                name,
+                name_span,
+                items,
+            } => self.write_values(*name, *name_span, items),
             DirectiveKind::Version(e) => {
                 let v = self.expr(e)?;
                 let ver = self.to_float(&v, e.span)?;

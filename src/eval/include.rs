@@ -171,7 +171,7 @@ impl Evaluator<'_> {
     }
 
     /// The folders a file named in the scene is searched in (see [`search_dirs`]).
-    fn search_dirs(&self, name: &str) -> Vec<PathBuf> {
+    pub(crate) fn search_dirs(&self, name: &str) -> Vec<PathBuf> {
         let here = self.include_stack.last().copied().unwrap_or(FileId(0));
         search_dirs(
             name,
@@ -242,6 +242,17 @@ impl Evaluator<'_> {
 
     /// Finds and loads an include file.
     fn resolve(&mut self, name: &str, span: Span) -> R<FileId> {
+        // A file this scene wrote (#write) is read as written, even when the disk is
+        // not written (`rts check`).
+        if let Some((path, data)) = self.overlay_find(name) {
+            let text = String::from_utf8_lossy(&data).into_owned();
+            let same = self
+                .sources
+                .files()
+                .find(|(_, f)| f.path.as_deref() == Some(path.as_path()) && f.text == text)
+                .map(|(id, _)| id);
+            return Ok(same.unwrap_or_else(|| self.sources.add(name.to_string(), Some(path), text)));
+        }
         let mut tried = Vec::new();
         if let Some((canon, shown)) = self.search(name, span, &mut tried)? {
             if let Some(id) = self.sources.find_path(&canon) {

@@ -14,6 +14,7 @@ mod camera_path;
 mod cursor;
 mod directives;
 mod exprs;
+pub mod file_io;
 pub mod function;
 mod import;
 mod include;
@@ -92,6 +93,9 @@ pub struct EvalOptions {
     pub max_include_depth: usize,
     /// Most elements in one array.
     pub max_array_size: usize,
+    /// Whether `#write` reaches the disk (rendering) or only later reads of the
+    /// same evaluation (`rts check`, the editor).
+    pub write_files: bool,
 }
 
 impl Default for EvalOptions {
@@ -114,6 +118,7 @@ impl Default for EvalOptions {
             max_macro_depth: 1_000,
             max_include_depth: 64,
             max_array_size: 1 << 22,
+            write_files: false,
         }
     }
 }
@@ -206,9 +211,13 @@ pub fn eval_cached(
         built_objects: Default::default(),
         blob_items: false,
         pending_function: None,
+        written: Default::default(),
+        open_writes: Vec::new(),
+        files_seen: Default::default(),
     };
     ev.define_command_line();
     ev.run_top(&file.items);
+    ev.close_all_files(Span::new(file_id, 0, 0));
     cache.parsed_includes = std::mem::take(&mut ev.parsed_includes);
     cache.meshes = std::mem::take(&mut ev.mesh_cache);
     cache.meshes.end();
@@ -280,6 +289,12 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) blob_items: bool,
     /// A `function { }` met as a pattern, until the pattern reader takes it.
     pub(crate) pending_function: Option<Arc<function::Function>>,
+    /// Files written by `#write` in this evaluation (see `file_io.rs`).
+    pub(crate) written: file_io::Overlay,
+    /// Files opened for writing, closed at the end if the scene does not.
+    pub(crate) open_writes: Vec<std::rc::Rc<std::cell::RefCell<file_io::OpenFile>>>,
+    /// Names ever opened by `#fopen` (closing one twice is allowed).
+    pub(crate) files_seen: rustc_hash::FxHashSet<crate::syntax::Sym>,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps

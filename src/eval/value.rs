@@ -171,6 +171,8 @@ pub enum Value {
     Spline(Rc<super::spline::Spline>),
     /// A `function { }`, called as `F(x, y, z)`.
     Function(Arc<super::function::Function>),
+    /// A file opened by `#fopen`.
+    File(Rc<std::cell::RefCell<super::file_io::OpenFile>>),
     /// The value of something whose evaluation failed (already reported); using it
     /// fails silently so one error does not cascade.
     Poison,
@@ -209,6 +211,7 @@ impl Value {
             Value::Macro(_) => "a macro",
             Value::Spline(_) => "a spline",
             Value::Function(_) => "a function",
+            Value::File(_) => "a file",
             Value::Poison => "an erroneous value",
         }
     }

@@ -171,6 +171,22 @@ pub const DOCS: &[Doc] = &[
         "#version 3.7;",
         "The POV-Ray language version the scene is written for.",
     ),
+    dir(
+        "fopen",
+        "#fopen NAME \"FILE\" read|write|append",
+        "Opens a file under NAME for #read or #write (written files reach the disk only when rendering).",
+    ),
+    dir("fclose", "#fclose NAME", "Closes a file opened by #fopen."),
+    dir(
+        "read",
+        "#read (NAME, VAR, …)",
+        "Reads the file's next floats, vectors and strings into variables; at the end of the data NAME becomes undefined.",
+    ),
+    dir(
+        "write",
+        "#write (NAME, ITEM, …)",
+        "Writes strings, floats (as %g), vectors and binary integers (uint8 V, sint16le V, …) to a file opened for writing.",
+    ),
     // ------------------------------------------------------------------ colours and values
     kw(
         "color",
@@ -1419,6 +1435,11 @@ pub const DOCS: &[Doc] = &[
     func("str", "str(A, WIDTH, DECIMALS)", "A float as text: at least |WIDTH| characters (zero-padded when WIDTH < 0), DECIMALS decimals (six when negative, as in POV-Ray)."),
     func("concat", "concat(S1, S2, …)", "Joins strings."),
     func("strlen", "strlen(S)", "The length of a string."),
+    func(
+        "strcmp",
+        "strcmp(S1, S2)",
+        "Compares two strings: 0 when equal, else the difference of the first characters that differ (negative when S1 sorts first), as C and POV-Ray do.",
+    ),
     func(
         "substr",
         "substr(S, START, LENGTH)",

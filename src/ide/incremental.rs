@@ -276,6 +276,39 @@ impl Shift {
             DirectiveKind::Message(k, e) => DirectiveKind::Message(*k, self.expr(e)),
             DirectiveKind::Default(items) => DirectiveKind::Default(self.items(items)),
             DirectiveKind::Version(e) => DirectiveKind::Version(self.expr(e)),
+            DirectiveKind::FOpen {
+                name,
+                name_span,
+                file,
+                mode,
+            } => DirectiveKind::FOpen {
+                name: *name,
+                name_span: self.span(*name_span),
+                file: self.expr(file),
+                mode: *mode,
+            },
+            DirectiveKind::FClose { name, span } => DirectiveKind::FClose {
+                name: *name,
+                span: self.span(*span),
+            },
+            DirectiveKind::Read {
+                name,
+                name_span,
+                targets,
+            } => DirectiveKind::Read {
+                name: *name,
+                name_span: self.span(*name_span),
+                targets: targets.iter().map(|t| self.lvalue(t)).collect(),
+            },
+            DirectiveKind::Write {
+                name,
+                name_span,
+                items,
+            } => DirectiveKind::Write {
+                name: *name,
+                name_span: self.span(*name_span),
+                items: items.iter().map(|(k, e)| (*k, self.expr(e))).collect(),
+            },
         }
     }
 

@@ -483,6 +483,43 @@ impl Builder<'_> {
             }
             DirectiveKind::Message(_, e) | DirectiveKind::Version(e) => self.expr(e),
             DirectiveKind::Default(items) => self.items(items, scope, file),
+            DirectiveKind::FOpen {
+                name,
+                name_span,
+                file: f,
+                ..
+            } => {
+                self.expr(f);
+                self.def(*name, DefKind::Declare, *name_span, span, None);
+            }
+            DirectiveKind::FClose { name, span } => self.use_(*name, *span),
+            DirectiveKind::Read {
+                name,
+                name_span,
+                targets,
+            } => {
+                self.use_(*name, *name_span);
+                for t in targets {
+                    for i in &t.indices {
+                        self.expr(i);
+                    }
+                    if t.indices.is_empty() {
+                        self.def(t.name, DefKind::Declare, t.name_span, span, None);
+                    } else {
+                        self.use_(t.name, t.name_span);
+                    }
+                }
+            }
+            DirectiveKind::Write {
+                name,
+                name_span,
+                items,
+            } => {
+                self.use_(*name, *name_span);
+                for (_, e) in items {
+                    self.expr(e);
+                }
+            }
         }
     }
 

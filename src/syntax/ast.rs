@@ -164,6 +164,38 @@ pub enum MessageKind {
     Error,
 }
 
+/// How `#fopen` opens a file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OpenMode {
+    /// `read`: values are read with `#read`.
+    Read,
+    /// `write`: the file is created (or emptied) and written with `#write`.
+    Write,
+    /// `append`: `#write` adds to the end of the file.
+    Append,
+}
+
+/// A binary integer type of `#write`: `uint8 V`, `sint16le V`, …
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinaryKind {
+    /// `uint8`: one byte, 0 to 255.
+    U8,
+    /// `sint8`: one byte, -128 to 127.
+    S8,
+    /// `uint16be`: two bytes, big-endian.
+    U16Be,
+    /// `uint16le`: two bytes, little-endian.
+    U16Le,
+    /// `sint16be`: two bytes, big-endian, signed.
+    S16Be,
+    /// `sint16le`: two bytes, little-endian, signed.
+    S16Le,
+    /// `sint32be`: four bytes, big-endian, signed.
+    S32Be,
+    /// `sint32le`: four bytes, little-endian, signed.
+    S32Le,
+}
+
 /// The directives.
 #[derive(Clone, Debug)]
 pub enum DirectiveKind {
@@ -242,6 +274,42 @@ pub enum DirectiveKind {
     Default(Vec<Item>),
     /// `#version V;`.
     Version(Expr),
+    /// `#fopen NAME "FILE" read|write|append`.
+    FOpen {
+        /// The file identifier.
+        name: Sym,
+        /// Where the identifier was written.
+        name_span: Span,
+        /// The file name.
+        file: Expr,
+        /// How the file is opened.
+        mode: OpenMode,
+    },
+    /// `#fclose NAME`.
+    FClose {
+        /// The file identifier.
+        name: Sym,
+        /// Where it was written.
+        span: Span,
+    },
+    /// `#read (NAME, VAR, …)`.
+    Read {
+        /// The file identifier.
+        name: Sym,
+        /// Where it was written.
+        name_span: Span,
+        /// The variables read into, in order.
+        targets: Vec<LValue>,
+    },
+    /// `#write (NAME, ITEM, …)`.
+    Write {
+        /// The file identifier.
+        name: Sym,
+        /// Where it was written.
+        name_span: Span,
+        /// The items, each optionally written as a binary integer.
+        items: Vec<(Option<BinaryKind>, Expr)>,
+    },
 }
 
 /// An expression with its span.

@@ -276,6 +276,69 @@ impl Lowerer {
                 inner.next();
                 DirectiveKind::Version(self.expr(inner.next().expect("version")))
             }
+            Rule::fopen_d => {
+                inner.next();
+                let n = inner.next().expect("name");
+                let file = self.expr(inner.next().expect("file"));
+                let mode = match inner.next().expect("mode").as_str() {
+                    "read" => OpenMode::Read,
+                    "write" => OpenMode::Write,
+                    _ => OpenMode::Append,
+                };
+                DirectiveKind::FOpen {
+                    name: intern(n.as_str()),
+                    name_span: self.span(&n),
+                    file,
+                    mode,
+                }
+            }
+            Rule::fclose_d => {
+                let n = inner.nth(1).expect("name");
+                DirectiveKind::FClose {
+                    name: intern(n.as_str()),
+                    span: self.span(&n),
+                }
+            }
+            Rule::read_d => {
+                inner.next();
+                let n = inner.next().expect("name");
+                let targets = inner.map(|t| self.lvalue(t)).collect();
+                DirectiveKind::Read {
+                    name: intern(n.as_str()),
+                    name_span: self.span(&n),
+                    targets,
+                }
+            }
+            Rule::write_d => {
+                inner.next();
+                let n = inner.next().expect("name");
+                let items = inner
+                    .map(|item| {
+                        let mut parts = item.into_inner();
+                        let first = parts.next().expect("write item");
+                        if first.as_rule() == Rule::binary_kind {
+                            let kind = match first.as_str() {
+                                "uint8" => BinaryKind::U8,
+                                "sint8" => BinaryKind::S8,
+                                "uint16be" => BinaryKind::U16Be,
+                                "uint16le" => BinaryKind::U16Le,
+                                "sint16be" => BinaryKind::S16Be,
+                                "sint16le" => BinaryKind::S16Le,
+                                "sint32be" => BinaryKind::S32Be,
+                                _ => BinaryKind::S32Le,
+                            };
+                            (Some(kind), self.expr(parts.next().expect("value")))
+                        } else {
+                            (None, self.expr(first))
+                        }
+                    })
+                    .collect();
+                DirectiveKind::Write {
+                    name: intern(n.as_str()),
+                    name_span: self.span(&n),
+                    items,
+                }
+            }
             other => unreachable!("not a directive rule: {other:?}"),
         };
         Directive { kind, span }

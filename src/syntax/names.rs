@@ -28,7 +28,18 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         | Rule::include_d
         | Rule::message_d
         | Rule::default_d
-        | Rule::version_d => "a directive",
+        | Rule::version_d
+        | Rule::fopen_d
+        | Rule::fclose_d
+        | Rule::read_d
+        | Rule::write_d => "a directive",
+        Rule::open_mode => "`read`, `write` or `append`",
+        Rule::write_item => "a value to write",
+        Rule::binary_kind => "a binary type (`uint8`, `sint16le`, …)",
+        Rule::kw_fopen => "`fopen`",
+        Rule::kw_fclose => "`fclose`",
+        Rule::kw_read => "`read`",
+        Rule::kw_write => "`write`",
         Rule::decl_kind => "`declare` or `local`",
         Rule::lvalue | Rule::ident_name | Rule::ident | Rule::ident_raw => "a name",
         Rule::rhs => "a value",

@@ -16,6 +16,7 @@ const OPENING_DIRECTIVES: &[&str] = &["if", "ifdef", "ifndef", "while", "for", "
 const MIDDLE_DIRECTIVES: &[&str] = &["else", "elseif", "case", "range", "break"];
 const PLAIN_DIRECTIVES: &[&str] = &[
     "declare", "local", "undef", "include", "debug", "warning", "error", "default", "version",
+    "fopen", "fclose", "read", "write",
 ];
 
 struct Scanner<'a> {

@@ -51,7 +51,7 @@ g = {
                           "3": {"name": "entity.name.function.rts"}}},
             {"name": "keyword.control.directive.rts",
              "match": "#\\s*(if|ifdef|ifndef|elseif|else|end|switch|case|range|break|while|for|macro|"
-                      "declare|local|undef|debug|warning|error|default|version)\\b"}]},
+                      "declare|local|undef|debug|warning|error|default|version|fopen|fclose|read|write)\\b"}]},
         "numbers": {"name": "constant.numeric.rts",
                     "match": "(?<![A-Za-z0-9_.])(\\d+\\.?\\d*|\\.\\d+)([eE][-+]?\\d+)?"},
         "calls": {"patterns": [

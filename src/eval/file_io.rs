@@ -1,0 +1,719 @@
+//! File input and output directives, as in POV-Ray: `#fopen NAME "FILE" read|write|append`,
+//! `#read (NAME, VAR, …)`, `#write (NAME, ITEM, …)` and `#fclose NAME`.
+//!
+//! A file opened for reading is read whole; `#read` takes its next comma-separated
+//! values (floats, vectors `<…>`, strings `"…"`) into variables. When only blanks
+//! and commas are left, the file is closed and its name undefined, so
+//! `#while (defined(NAME))` reads to the end, as in POV-Ray.
+//!
+//! Written files are kept in memory until `#fclose` (or the end of the scene), then
+//! stored in the evaluation's file overlay, which later `#include`s and `#fopen … read`
+//! see. Only when [`super::EvalOptions::write_files`] is set (rendering) do they reach
+//! the disk, so `rts check` and the editor never write files.
+
+use super::value::{Value, Vector};
+use super::{Evaluator, R};
+use crate::diag::{codes, Diagnostic};
+use crate::span::Span;
+use crate::syntax::ast::{BinaryKind, Expr, LValue, OpenMode};
+use crate::syntax::Sym;
+use std::cell::RefCell;
+use std::path::{Path, PathBuf};
+use std::rc::Rc;
+
+/// A file opened by `#fopen`, shared by every copy of its identifier's value.
+#[derive(Debug)]
+pub struct OpenFile {
+    /// Where the file is (canonical folder + file name).
+    path: PathBuf,
+    /// The file name as the scene wrote it.
+    shown: String,
+    state: FileState,
+}
+
+#[derive(Debug)]
+enum FileState {
+    /// Reading: the whole text and how far `#read` has come.
+    Read { data: Rc<[u8]>, pos: usize },
+    /// Writing: everything the file will hold.
+    Write { buf: Vec<u8> },
+    /// Closed by `#fclose` or at the end of the data.
+    Closed,
+}
+
+/// Files written during one evaluation, by path (see the module documentation).
+pub(crate) type Overlay = rustc_hash::FxHashMap<PathBuf, Rc<[u8]>>;
+
+/// The most bytes one file may grow to by `#write` (a runaway loop ends here).
+const MAX_WRITTEN: usize = 256 << 20;
+
+/// Where `name` in `dir` is, with the folder made canonical (the file itself need not
+/// exist).
+pub(crate) fn overlay_key(dir: &Path, name: &str) -> Option<PathBuf> {
+    let p = dir.join(name);
+    let parent = p.parent()?.canonicalize().ok()?;
+    Some(parent.join(p.file_name()?))
+}
+
+impl Evaluator<'_> {
+    /// `#fopen NAME "FILE" MODE`.
+    pub(crate) fn fopen(
+        &mut self,
+        name: Sym,
+        name_span: Span,
+        file: &Expr,
+        mode: OpenMode,
+    ) -> R<()> {
+        if name.is_builtin() {
+            return Err(self.reserved(name_span, &name.name()));
+        }
+        if let Some(Value::File(f)) = self.scope.get(name).map(|b| &b.value) {
+            if !matches!(f.borrow().state, FileState::Closed) {
+                return Err(Diagnostic::error(
+                    codes::FILE_IO,
+                    name_span,
+                    format!("`{name}` is already an open file"),
+                )
+                .with_label("opened again here")
+                .with_help(format!(
+                    "close it first with `#fclose {name}`, or use another name"
+                ))
+                .into());
+            }
+        }
+        let v = self.expr(file)?;
+        let fname = self.to_str(&v, file.span)?;
+        self.files_seen.insert(name);
+        let state = match mode {
+            OpenMode::Read => {
+                let (path, data) = self.read_whole(&fname, file.span)?;
+                let f = OpenFile {
+                    path,
+                    shown: fname.to_string(),
+                    state: FileState::Read { data, pos: 0 },
+                };
+                let f = Rc::new(RefCell::new(f));
+                self.scope.declare(name, Value::File(f.clone()), name_span);
+                // An empty file is at its end at once.
+                if at_end(&f.borrow()) {
+                    f.borrow_mut().state = FileState::Closed;
+                    self.scope.undef(name);
+                }
+                return Ok(());
+            }
+            OpenMode::Write | OpenMode::Append => {
+                let path = self.write_path(&fname, file.span)?;
+                let buf = if mode == OpenMode::Append {
+                    match self.written.get(&path) {
+                        Some(d) => d.to_vec(),
+                        None => std::fs::read(&path).unwrap_or_default(),
+                    }
+                } else {
+                    Vec::new()
+                };
+                (path, FileState::Write { buf })
+            }
+        };
+        let f = Rc::new(RefCell::new(OpenFile {
+            path: state.0,
+            shown: fname.to_string(),
+            state: state.1,
+        }));
+        self.open_writes.push(f.clone());
+        self.scope.declare(name, Value::File(f), name_span);
+        Ok(())
+    }
+
+    /// `#fclose NAME`. Closing a file already closed at the end of its data is
+    /// allowed, as in POV-Ray.
+    pub(crate) fn fclose(&mut self, name: Sym, span: Span) -> R<()> {
+        match self.scope.get(name).map(|b| b.value.clone()) {
+            Some(Value::File(f)) => {
+                self.close_file(&f, span)?;
+                self.scope.undef(name);
+                Ok(())
+            }
+            Some(other) => Err(not_a_file(name, span, other.kind()).into()),
+            None if self.files_seen.contains(&name) => Ok(()),
+            None => Err(self.not_open(name, span).into()),
+        }
+    }
+
+    /// `#read (NAME, VAR, …)`.
+    pub(crate) fn read_values(&mut self, name: Sym, span: Span, targets: &[LValue]) -> R<()> {
+        let f = self.file_value(name, span)?;
+        for t in targets {
+            let item = {
+                let mut file = f.borrow_mut();
+                let shown = file.shown.clone();
+                let FileState::Read { data, pos } = &mut file.state else {
+                    return Err(Diagnostic::error(
+                        codes::FILE_IO,
+                        span,
+                        format!("`{name}` was not opened for reading"),
+                    )
+                    .with_help(format!("open it with `#fopen {name} \"{shown}\" read`"))
+                    .into());
+                };
+                match next_value(data, pos) {
+                    Ok(Some(v)) => v,
+                    // The data ended: the remaining variables stay as they were.
+                    Ok(None) => break,
+                    Err((at, what)) => {
+                        let (line, col) = line_col(data, at);
+                        return Err(Diagnostic::error(
+                            codes::FILE_IO,
+                            span,
+                            format!("cannot read `{shown}` at line {line}, column {col}: {what}"),
+                        )
+                        .with_label("reading this file")
+                        .with_help("#read takes floats, vectors `<…>` and strings `\"…\"` separated by commas")
+                        .into());
+                    }
+                }
+            };
+            self.bind(false, t, item, t.name_span)?;
+        }
+        if at_end(&f.borrow()) {
+            f.borrow_mut().state = FileState::Closed;
+            self.scope.undef(name);
+        }
+        Ok(())
+    }
+
+    /// `#write (NAME, ITEM, …)`.
+    pub(crate) fn write_values(
+        &mut self,
+        name: Sym,
+        span: Span,
+        items: &[(Option<BinaryKind>, Expr)],
+    ) -> R<()> {
+        let f = self.file_value(name, span)?;
+        let mut out = Vec::new();
+        for (kind, e) in items {
+            let v = self.expr(e)?;
+            match (kind, &v) {
+                (Some(k), _) => {
+                    let x = self.to_float(&v, e.span)?;
+                    write_binary(&mut out, *k, x);
+                }
+                (None, Value::Str(s)) => out.extend_from_slice(s.as_bytes()),
+                (None, Value::Float(x)) => out.extend_from_slice(format_g(*x).as_bytes()),
+                (None, Value::Vector(vec)) => {
+                    let parts: Vec<String> = vec.as_slice().iter().map(|x| format_g(*x)).collect();
+                    // POV-Ray writes a blank after a vector.
+                    out.extend_from_slice(format!("<{}> ", parts.join(",")).as_bytes());
+                }
+                (None, other) => {
+                    return Err(Diagnostic::error(
+                        codes::TYPE_MISMATCH,
+                        e.span,
+                        format!(
+                            "#write takes strings, floats and vectors, not {}",
+                            other.kind()
+                        ),
+                    )
+                    .with_help("write its parts, e.g. `vstr(3, V, \",\", 0, 6)` or `C.red`")
+                    .into());
+                }
+            }
+        }
+        let mut file = f.borrow_mut();
+        let shown = file.shown.clone();
+        let FileState::Write { buf } = &mut file.state else {
+            return Err(Diagnostic::error(
+                codes::FILE_IO,
+                span,
+                format!("`{name}` was not opened for writing"),
+            )
+            .with_help(format!(
+                "open it with `#fopen {name} \"{shown}\" write` (or `append`)"
+            ))
+            .into());
+        };
+        if buf.len() + out.len() > MAX_WRITTEN {
+            return Err(Diagnostic::error(
+                codes::FILE_IO,
+                span,
+                format!("`{shown}` would grow past {} MiB", MAX_WRITTEN >> 20),
+            )
+            .with_help("check the loop that writes it")
+            .into());
+        }
+        buf.extend_from_slice(&out);
+        Ok(())
+    }
+
+    /// Closes every file still open for writing (at the end of the scene).
+    pub(crate) fn close_all_files(&mut self, span: Span) {
+        for f in std::mem::take(&mut self.open_writes) {
+            if let Err(e) = self.close_file(&f, span) {
+                self.report(e);
+            }
+        }
+    }
+
+    /// Closes a file; a written one is stored in the overlay and, when rendering,
+    /// on disk.
+    fn close_file(&mut self, f: &Rc<RefCell<OpenFile>>, span: Span) -> R<()> {
+        let state = std::mem::replace(&mut f.borrow_mut().state, FileState::Closed);
+        let FileState::Write { buf } = state else {
+            return Ok(());
+        };
+        let file = f.borrow();
+        if self.options.write_files {
+            if let Err(e) = std::fs::write(&file.path, &buf) {
+                return Err(Diagnostic::error(
+                    codes::FILE_IO,
+                    span,
+                    format!("cannot write `{}`: {e}", file.path.display()),
+                )
+                .into());
+            }
+        }
+        self.written.insert(file.path.clone(), buf.into());
+        Ok(())
+    }
+
+    /// The open file `name` stands for.
+    fn file_value(&mut self, name: Sym, span: Span) -> R<Rc<RefCell<OpenFile>>> {
+        match self.scope.get(name).map(|b| b.value.clone()) {
+            Some(Value::File(f)) if !matches!(f.borrow().state, FileState::Closed) => Ok(f),
+            Some(Value::File(_)) => Err(self.not_open(name, span).into()),
+            Some(other) => Err(not_a_file(name, span, other.kind()).into()),
+            None => Err(self.not_open(name, span).into()),
+        }
+    }
+
+    fn not_open(&self, name: Sym, span: Span) -> Diagnostic {
+        let d = Diagnostic::error(
+            codes::FILE_IO,
+            span,
+            format!("`{name}` is not an open file"),
+        );
+        if self.files_seen.contains(&name) {
+            return d.with_label("closed already").with_help(
+                "it was closed by #fclose, or at the end of its data when read (test `defined(NAME)` before reading); open it again with #fopen",
+            );
+        }
+        let mut names: Vec<String> = self.files_seen.iter().map(|s| s.to_string()).collect();
+        names.sort();
+        let d = d.with_label("no #fopen for this name");
+        match crate::diag::did_you_mean(&name.name(), names.iter().map(String::as_str)) {
+            Some(s) => d.with_help(format!("did you mean `{s}`?")),
+            None => d.with_help(format!("open it first: `#fopen {name} \"file.txt\" read`")),
+        }
+    }
+
+    /// Finds a file to read (written ones first, then the include search folders)
+    /// and reads it whole.
+    fn read_whole(&mut self, name: &str, span: Span) -> R<(PathBuf, Rc<[u8]>)> {
+        if let Some(found) = self.overlay_find(name) {
+            return Ok(found);
+        }
+        let mut tried = Vec::new();
+        let Some((path, _)) = self.search(name, span, &mut tried)? else {
+            return Err(Diagnostic::error(
+                codes::FILE_NOT_FOUND,
+                span,
+                format!("file `{name}` not found"),
+            )
+            .with_label("no such file")
+            .with_note(format!("tried: {}", tried.join(", ")))
+            .with_help("check the file name, or add its folder with -I DIR")
+            .into());
+        };
+        match std::fs::read(&path) {
+            Ok(d) => {
+                self.data_files.borrow_mut().push(path.clone());
+                Ok((path, d.into()))
+            }
+            Err(e) => Err(Diagnostic::error(
+                codes::FILE_NOT_FOUND,
+                span,
+                format!("cannot read `{name}`: {e}"),
+            )
+            .into()),
+        }
+    }
+
+    /// A file of this name written earlier in this evaluation, looked for in the
+    /// include search folders.
+    pub(crate) fn overlay_find(&self, name: &str) -> Option<(PathBuf, Rc<[u8]>)> {
+        if self.written.is_empty() {
+            return None;
+        }
+        self.search_dirs(name)
+            .iter()
+            .filter_map(|d| overlay_key(d, name))
+            .find_map(|k| self.written.get(&k).map(|d| (k, d.clone())))
+    }
+
+    /// Where a file written as `name` goes: relative names are taken from the scene's
+    /// folder; the folder must exist and lie where the scene may write (its own
+    /// folder and `--allow-path` folders, or anywhere with `--allow-any-path`).
+    fn write_path(&self, name: &str, span: Span) -> R<PathBuf> {
+        let base = self.scene_dir.clone().unwrap_or_else(|| PathBuf::from("."));
+        let base = if base.as_os_str().is_empty() {
+            PathBuf::from(".")
+        } else {
+            base
+        };
+        let Some(path) = overlay_key(&base, name) else {
+            let p = base.join(name);
+            let folder = p
+                .parent()
+                .map(|p| p.display().to_string())
+                .unwrap_or_default();
+            return Err(Diagnostic::error(
+                codes::FILE_IO,
+                span,
+                format!("cannot write `{name}`: no folder `{folder}`"),
+            )
+            .with_help("create the folder first, or write into the scene's folder")
+            .into());
+        };
+        let access = &self.options.access;
+        let canon = |p: &Path| p.canonicalize().ok();
+        let permitted = access.unrestricted
+            || self
+                .scene_dir
+                .as_deref()
+                .map(|d| {
+                    if d.as_os_str().is_empty() {
+                        Path::new(".")
+                    } else {
+                        d
+                    }
+                })
+                .into_iter()
+                .filter_map(canon)
+                .chain(access.allowed.iter().filter_map(|p| canon(p)))
+                .any(|d| path.starts_with(d));
+        if !permitted {
+            return Err(Diagnostic::error(
+                codes::FILE_NOT_ALLOWED,
+                span,
+                format!(
+                    "`{}` is outside the folders this scene may write",
+                    path.display()
+                ),
+            )
+            .with_label("outside the scene's folder")
+            .with_help("scenes write only under their own folder; allow more with --allow-path DIR")
+            .into());
+        }
+        Ok(path)
+    }
+}
+
+fn not_a_file(name: Sym, span: Span, kind: &str) -> Diagnostic {
+    Diagnostic::error(
+        codes::TYPE_MISMATCH,
+        span,
+        format!("`{name}` is {kind}, not a file opened by #fopen"),
+    )
+    .with_help(format!(
+        "open a file first: `#fopen {name} \"file.txt\" read`"
+    ))
+}
+
+/// Whether only blanks and commas are left to read.
+fn at_end(f: &OpenFile) -> bool {
+    match &f.state {
+        FileState::Read { data, pos } => {
+            let mut p = *pos;
+            skip_separators(data, &mut p);
+            p >= data.len()
+        }
+        _ => false,
+    }
+}
+
+fn skip_separators(data: &[u8], pos: &mut usize) {
+    while *pos < data.len() && (data[*pos].is_ascii_whitespace() || data[*pos] == b',') {
+        *pos += 1;
+    }
+}
+
+fn skip_blanks(data: &[u8], pos: &mut usize) {
+    while *pos < data.len() && data[*pos].is_ascii_whitespace() {
+        *pos += 1;
+    }
+}
+
+/// The next value of a file being read: `Ok(None)` at the end, `Err((offset, what))`
+/// for something that is not a value.
+fn next_value(data: &[u8], pos: &mut usize) -> Result<Option<Value>, (usize, String)> {
+    skip_separators(data, pos);
+    let Some(&c) = data.get(*pos) else {
+        return Ok(None);
+    };
+    match c {
+        b'"' => {
+            let start = *pos;
+            *pos += 1;
+            let mut s = Vec::new();
+            loop {
+                match data.get(*pos) {
+                    None => return Err((start, "a string without its closing `\"`".into())),
+                    Some(b'"') => {
+                        *pos += 1;
+                        break;
+                    }
+                    Some(b'\\') if data.get(*pos + 1).is_some() => {
+                        let e = data[*pos + 1];
+                        s.push(match e {
+                            b'n' => b'\n',
+                            b't' => b'\t',
+                            b'r' => b'\r',
+                            other => other,
+                        });
+                        *pos += 2;
+                    }
+                    Some(&b) => {
+                        s.push(b);
+                        *pos += 1;
+                    }
+                }
+            }
+            Ok(Some(Value::Str(String::from_utf8_lossy(&s).into())))
+        }
+        b'<' => {
+            *pos += 1;
+            let mut comps = Vec::new();
+            loop {
+                skip_blanks(data, pos);
+                if data.get(*pos) == Some(&b'>') {
+                    *pos += 1;
+                    break;
+                }
+                if !comps.is_empty() {
+                    if data.get(*pos) != Some(&b',') {
+                        return Err((*pos, "expected `,` or `>` in a vector".into()));
+                    }
+                    *pos += 1;
+                    skip_blanks(data, pos);
+                }
+                comps.push(sum(data, pos)?);
+                if comps.len() > 5 {
+                    return Err((*pos, "a vector has at most 5 components".into()));
+                }
+            }
+            match comps.len() {
+                0 | 1 => Err((*pos, "a vector needs 2 to 5 components".into())),
+                n => {
+                    debug_assert!(n <= 5);
+                    Ok(Some(Value::Vector(Vector::from_slice(&comps))))
+                }
+            }
+        }
+        _ => sum(data, pos).map(|x| Some(Value::Float(x))),
+    }
+}
+
+/// Numbers joined by `+ - * /`: POV-Ray reads a float as an expression, so
+/// `1e-07 -0` is one value (a difference), while `1 2` are two.
+fn sum(data: &[u8], pos: &mut usize) -> Result<f64, (usize, String)> {
+    let mut x = product(data, pos)?;
+    loop {
+        let mut p = *pos;
+        skip_blanks(data, &mut p);
+        let op = data.get(p).copied();
+        if !matches!(op, Some(b'+' | b'-')) {
+            return Ok(x);
+        }
+        p += 1;
+        skip_blanks(data, &mut p);
+        let y = product(data, &mut p)?;
+        *pos = p;
+        x = if op == Some(b'+') { x + y } else { x - y };
+    }
+}
+
+fn product(data: &[u8], pos: &mut usize) -> Result<f64, (usize, String)> {
+    let mut x = number(data, pos)?;
+    loop {
+        let mut p = *pos;
+        skip_blanks(data, &mut p);
+        let op = data.get(p).copied();
+        if !matches!(op, Some(b'*' | b'/')) {
+            return Ok(x);
+        }
+        p += 1;
+        skip_blanks(data, &mut p);
+        let y = number(data, &mut p)?;
+        *pos = p;
+        x = if op == Some(b'*') { x * y } else { x / y };
+    }
+}
+
+/// A number at `pos` (optional sign, digits, fraction, exponent).
+fn number(data: &[u8], pos: &mut usize) -> Result<f64, (usize, String)> {
+    let start = *pos;
+    let mut p = *pos;
+    if matches!(data.get(p), Some(b'+' | b'-')) {
+        p += 1;
+    }
+    let digits = |p: &mut usize| {
+        let s = *p;
+        while data.get(*p).is_some_and(u8::is_ascii_digit) {
+            *p += 1;
+        }
+        *p > s
+    };
+    let mut any = digits(&mut p);
+    if data.get(p) == Some(&b'.') {
+        p += 1;
+        any |= digits(&mut p);
+    }
+    if any && matches!(data.get(p), Some(b'e' | b'E')) {
+        let mut q = p + 1;
+        if matches!(data.get(q), Some(b'+' | b'-')) {
+            q += 1;
+        }
+        if digits(&mut q) {
+            p = q;
+        }
+    }
+    let text = std::str::from_utf8(&data[start..p]).unwrap_or("");
+    match (any, text.parse::<f64>()) {
+        (true, Ok(x)) => {
+            *pos = p;
+            Ok(x)
+        }
+        _ => {
+            let found: String = String::from_utf8_lossy(&data[start..data.len().min(start + 12)])
+                .chars()
+                .take_while(|c| *c != '\n')
+                .collect();
+            Err((start, format!("expected a number, found `{found}`")))
+        }
+    }
+}
+
+/// 1-based line and column of a byte offset.
+fn line_col(data: &[u8], at: usize) -> (usize, usize) {
+    let before = &data[..at.min(data.len())];
+    let line = before.iter().filter(|b| **b == b'\n').count() + 1;
+    let col = before.iter().rev().take_while(|b| **b != b'\n').count() + 1;
+    (line, col)
+}
+
+/// C's `%g`: six significant digits, exponent form for very large or small values,
+/// trailing zeros removed. POV-Ray writes floats this way.
+pub(crate) fn format_g(x: f64) -> String {
+    if x.is_nan() {
+        return "nan".into();
+    }
+    if x.is_infinite() {
+        return if x > 0.0 { "inf" } else { "-inf" }.into();
+    }
+    if x == 0.0 {
+        return if x.is_sign_negative() { "-0" } else { "0" }.into();
+    }
+    let e = format!("{x:.5e}");
+    let (mant, exp) = e.split_once('e').expect("exponent form");
+    let exp: i32 = exp.parse().expect("exponent");
+    if !(-4..6).contains(&exp) {
+        let mant = trim_zeros(mant);
+        let sign = if exp < 0 { '-' } else { '+' };
+        format!("{mant}e{sign}{:02}", exp.abs())
+    } else {
+        let decimals = (5 - exp).max(0) as usize;
+        trim_zeros(&format!("{x:.decimals$}")).to_string()
+    }
+}
+
+fn trim_zeros(s: &str) -> &str {
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        s
+    }
+}
+
+/// Appends `x` as a binary integer of kind `k`, rounded and clamped to its range
+/// (POV-Ray's behaviour).
+fn write_binary(out: &mut Vec<u8>, k: BinaryKind, x: f64) {
+    let r = x.round();
+    let clamp = |lo: f64, hi: f64| if r.is_nan() { 0.0 } else { r.clamp(lo, hi) };
+    match k {
+        BinaryKind::U8 => out.push(clamp(0.0, 255.0) as u8),
+        BinaryKind::S8 => out.push(clamp(-128.0, 127.0) as i8 as u8),
+        BinaryKind::U16Be => out.extend((clamp(0.0, 65535.0) as u16).to_be_bytes()),
+        BinaryKind::U16Le => out.extend((clamp(0.0, 65535.0) as u16).to_le_bytes()),
+        BinaryKind::S16Be => out.extend((clamp(-32768.0, 32767.0) as i16).to_be_bytes()),
+        BinaryKind::S16Le => out.extend((clamp(-32768.0, 32767.0) as i16).to_le_bytes()),
+        BinaryKind::S32Be => out.extend((clamp(-2147483648.0, 2147483647.0) as i32).to_be_bytes()),
+        BinaryKind::S32Le => out.extend((clamp(-2147483648.0, 2147483647.0) as i32).to_le_bytes()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn floats_are_written_as_c_writes_percent_g() {
+        for (x, s) in [
+            (1.5, "1.5"),
+            (1.0 / 3.0, "0.333333"),
+            (123456789.0, "1.23457e+08"),
+            (1e-7, "1e-07"),
+            (-0.0, "-0"),
+            (-4500.0, "-4500"),
+            (100000.0, "100000"),
+            (1000000.0, "1e+06"),
+            (0.0001, "0.0001"),
+            (0.00001234, "1.234e-05"),
+            (12.0, "12"),
+        ] {
+            assert_eq!(format_g(x), s, "{x}");
+        }
+    }
+
+    #[test]
+    fn values_are_read_in_order_and_the_end_is_seen_past_trailing_commas() {
+        let data = b"1.25, <1,2,3>, \"a\\\"b\", -7\n, 5e1 ,\n";
+        let mut pos = 0;
+        let mut got = Vec::new();
+        while let Some(v) = next_value(data, &mut pos).unwrap() {
+            got.push(format!("{v:?}"));
+        }
+        assert_eq!(got.len(), 5);
+        assert!(got[2].contains("a\\\"b"), "{}", got[2]);
+        let mut p = 0;
+        assert!(next_value(b"  abc", &mut p).is_err());
+        // As in POV-Ray, a float is an expression: `1e-07 -0` is one value.
+        let mut p = 0;
+        let mut n = 0;
+        while next_value(b"1.2 1e-07 -0 <1, 2*3> 4/2", &mut p)
+            .unwrap()
+            .is_some()
+        {
+            n += 1;
+        }
+        assert_eq!(n, 4);
+    }
+
+    #[test]
+    fn binary_integers_are_rounded_and_clamped() {
+        let mut out = Vec::new();
+        for (k, x) in [
+            (BinaryKind::U8, 65.0),
+            (BinaryKind::U8, 300.0),
+            (BinaryKind::S8, -1.0),
+            (BinaryKind::U8, 1.7),
+            (BinaryKind::S16Le, -2.0),
+            (BinaryKind::U16Be, 258.0),
+            (BinaryKind::S32Le, 1.0),
+        ] {
+            write_binary(&mut out, k, x);
+        }
+        assert_eq!(
+            out,
+            [0x41, 0xff, 0xff, 0x02, 0xfe, 0xff, 0x01, 0x02, 0x01, 0, 0, 0]
+        );
+    }
+}
