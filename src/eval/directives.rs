@@ -21,6 +21,7 @@ impl Evaluator<'_> {
                 let v = match value {
                     Rhs::Block(b) => self.block_value(b),
                     Rhs::Expr(e) => self.expr(e),
+                    Rhs::Directive(cond) => self.directive_value(cond),
                 };
                 let v = match v {
                     Ok(v) => v,
@@ -297,6 +298,34 @@ impl Evaluator<'_> {
                 }
                 Ok(())
             }
+        }
+    }
+
+    /// The value a conditional directive gives on the right of `#declare`: its
+    /// chosen branch must hold exactly one value (a trailing `;` aside).
+    fn directive_value(&mut self, d: &Directive) -> R<Value> {
+        let mut out = Sink::new();
+        self.directive(d, &mut out)?;
+        let mut vals = out.toks.into_iter().filter(|t| !matches!(t, Tok::Semi(_)));
+        match (vals.next(), vals.next()) {
+            (Some(Tok::Val(v, _) | Tok::Block(_, v, _)), None) => match v {
+                Value::Poison => Err(Fail::silent()),
+                v => Ok(v),
+            },
+            (None, _) => Err(Diagnostic::error(
+                codes::MISSING_VALUE,
+                d.span,
+                "the branch of this directive chosen gives no value to declare",
+            )
+            .with_help("give each branch the value: `#declare V = #if (C) 1; #else 2; #end`")
+            .into()),
+            (Some(t), _) => Err(Diagnostic::error(
+                codes::TYPE_MISMATCH,
+                d.span,
+                "the branch of this directive chosen gives several items where one value is needed",
+            )
+            .with_label(format!("first item: {}", t.describe()))
+            .into()),
         }
     }
 

@@ -192,6 +192,10 @@ impl Shift {
                 value: match value {
                     Rhs::Block(b) => Rhs::Block(Box::new(self.block(b))),
                     Rhs::Expr(e) => Rhs::Expr(Box::new(self.expr(e))),
+                    Rhs::Directive(d) => Rhs::Directive(Box::new(Directive {
+                        kind: self.directive(&d.kind),
+                        span: self.span(d.span),
+                    })),
                 },
             },
             DirectiveKind::Undef { name, span } => DirectiveKind::Undef {

@@ -365,6 +365,7 @@ impl Builder<'_> {
                 match value {
                     Rhs::Block(b) => self.block(b, scope, file),
                     Rhs::Expr(e) => self.expr(e),
+                    Rhs::Directive(d) => self.directive(&d.kind, d.span, scope, file),
                 }
                 if target.indices.is_empty() {
                     let kind = if *local {
@@ -643,7 +644,9 @@ fn outline_item(item: &Item, file: FileId) -> Option<Vec<OutlineItem>> {
             } if target.indices.is_empty() => {
                 let detail = match value {
                     Rhs::Block(b) => format!("{} {{ … }}", b.keyword.name),
-                    Rhs::Expr(_) => if *local { "#local" } else { "#declare" }.to_string(),
+                    Rhs::Expr(_) | Rhs::Directive(_) => {
+                        if *local { "#local" } else { "#declare" }.to_string()
+                    }
                 };
                 Some(vec![OutlineItem {
                     name: target.name.to_string(),
@@ -653,7 +656,7 @@ fn outline_item(item: &Item, file: FileId) -> Option<Vec<OutlineItem>> {
                     name_span: target.name_span,
                     children: match value {
                         Rhs::Block(b) => block_children(b, file),
-                        Rhs::Expr(_) => Vec::new(),
+                        Rhs::Expr(_) | Rhs::Directive(_) => Vec::new(),
                     },
                 }])
             }

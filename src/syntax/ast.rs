@@ -105,6 +105,9 @@ pub enum Rhs {
     Block(Box<Block>),
     /// `#declare R = 1.5;`.
     Expr(Box<Expr>),
+    /// `#declare R = #if (C) 1; #else 2; #end`: the chosen branch gives the value;
+    /// also `#declare M = #include "mesh.inc"`.
+    Directive(Box<Directive>),
 }
 
 /// One `#case (V)` or `#range (A, B)` clause of a `#switch`.

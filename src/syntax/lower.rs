@@ -116,6 +116,9 @@ impl Lowerer {
                 let v = inner.next().expect("rhs");
                 let value = match v.as_rule() {
                     Rule::block => Rhs::Block(Box::new(self.block(v))),
+                    Rule::if_d | Rule::ifdef_d | Rule::switch_d | Rule::include_d => {
+                        Rhs::Directive(Box::new(self.directive(v)))
+                    }
                     _ => Rhs::Expr(Box::new(self.expr(v))),
                 };
                 DirectiveKind::Declare {
