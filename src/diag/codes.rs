@@ -93,6 +93,8 @@ pub const BAD_CAMERA: &str = "rts::eval::bad_camera";
 pub const BAD_DEFINE: &str = "rts::cli::bad_define";
 /// A `#declare` that is never used (warning).
 pub const UNUSED_DECLARE: &str = "rts::lint::unused_declare";
+/// A use of a name declared `deprecated` (warning with the declaration's message).
+pub const DEPRECATED: &str = "rts::lint::deprecated";
 /// A scene without `assumed_gamma` (warning, as POV-Ray 3.7 gives).
 pub const NO_GAMMA: &str = "rts::lint::assumed_gamma_missing";
 /// A scene with no light sources (warning).

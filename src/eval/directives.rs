@@ -5,7 +5,7 @@ use super::value::Value;
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
 use crate::span::Span;
-use crate::syntax::ast::{CaseTest, Directive, DirectiveKind, LValue, MessageKind, Rhs};
+use crate::syntax::ast::{CaseTest, Directive, DirectiveKind, Item, LValue, MessageKind, Rhs};
 use std::rc::Rc;
 use std::sync::Arc;
 
@@ -17,7 +17,16 @@ impl Evaluator<'_> {
                 local,
                 target,
                 value,
+                deprecated,
             } => {
+                if let Some(dep) = deprecated {
+                    if target.indices.is_empty() {
+                        self.deprecated
+                            .insert(target.name, (dep.clone(), std::cell::Cell::new(false)));
+                    }
+                } else if target.indices.is_empty() && !self.deprecated.is_empty() {
+                    self.deprecated.remove(&target.name);
+                }
                 let v = match value {
                     Rhs::Block(b) => self.block_value(b),
                     Rhs::Expr(e) => self.expr(e),
@@ -301,9 +310,94 @@ impl Evaluator<'_> {
         }
     }
 
+    /// The items of the branches a conditional directive (`#if`, `#ifdef`,
+    /// `#switch`) chooses now, without running them: where the items are compiled
+    /// rather than evaluated (a function's body), as POV-Ray chooses while parsing.
+    /// `None` for other directives.
+    pub(crate) fn chosen_items(&mut self, d: &Directive) -> R<Option<Vec<Item>>> {
+        let mut out = Vec::new();
+        match &d.kind {
+            DirectiveKind::If {
+                branches,
+                otherwise,
+            } => {
+                let mut taken = false;
+                for (cond, body) in branches {
+                    let v = self.expr(cond)?;
+                    if self.to_float(&v, cond.span)? != 0.0 {
+                        out.extend(body.iter().cloned());
+                        taken = true;
+                        break;
+                    }
+                }
+                if !taken {
+                    out.extend(otherwise.iter().flatten().cloned());
+                }
+            }
+            DirectiveKind::IfDef {
+                negate,
+                target,
+                then,
+                otherwise,
+            } => {
+                if self.is_defined(target)? != *negate {
+                    out.extend(then.iter().cloned());
+                } else {
+                    out.extend(otherwise.iter().flatten().cloned());
+                }
+            }
+            DirectiveKind::Switch { .. } => {
+                // Run the switch on a token-free copy: choose by the same rules.
+                let DirectiveKind::Switch {
+                    value,
+                    cases,
+                    otherwise,
+                } = &d.kind
+                else {
+                    unreachable!()
+                };
+                let v = self.expr(value)?;
+                let x = self.to_float(&v, value.span)?;
+                let mut start = None;
+                for (i, c) in cases.iter().enumerate() {
+                    let hit = match &c.test {
+                        CaseTest::Case(e) => {
+                            let cv = self.expr(e)?;
+                            (self.to_float(&cv, e.span)? - x).abs() < 1e-10
+                        }
+                        CaseTest::Range(a, b) => {
+                            let av = self.expr(a)?;
+                            let bv = self.expr(b)?;
+                            let (lo, hi) =
+                                (self.to_float(&av, a.span)?, self.to_float(&bv, b.span)?);
+                            lo <= x && x <= hi
+                        }
+                    };
+                    if hit {
+                        start = Some(i);
+                        break;
+                    }
+                }
+                match start {
+                    Some(i) => {
+                        for c in &cases[i..] {
+                            out.extend(c.body.iter().cloned());
+                            if c.breaks {
+                                break;
+                            }
+                        }
+                    }
+                    None => out.extend(otherwise.iter().flatten().cloned()),
+                }
+            }
+            _ => return Ok(None),
+        }
+        Ok(Some(out))
+    }
+
     /// The value a conditional directive gives on the right of `#declare`: its
     /// chosen branch must hold exactly one value (a trailing `;` aside).
-    fn directive_value(&mut self, d: &Directive) -> R<Value> {
+    pub(crate) fn directive_value(&mut self, d: &Directive) -> R<Value> {
         let mut out = Sink::new();
         self.directive(d, &mut out)?;
         let mut vals = out.toks.into_iter().filter(|t| !matches!(t, Tok::Semi(_)));

@@ -167,6 +167,7 @@ impl Evaluator<'_> {
             }
             ExprKind::Array { dims, init } => self.array(dims, init.as_ref(), e.span),
             ExprKind::Block(b) => self.block_value(b),
+            ExprKind::Directive(d) => self.directive_value(d),
         }
     }
 
@@ -248,6 +249,20 @@ impl Evaluator<'_> {
     }
 
     fn ident(&mut self, name: Sym, span: Span) -> R<Value> {
+        if !self.deprecated.is_empty() {
+            if let Some((dep, warned)) = self.deprecated.get(&name) {
+                if !(dep.once && warned.get()) {
+                    warned.set(true);
+                    let d = Diagnostic::warning(
+                        codes::DEPRECATED,
+                        span,
+                        format!("`{name}` is deprecated: {}", dep.message),
+                    )
+                    .with_help("its declaration says what to use instead");
+                    self.warn(d);
+                }
+            }
+        }
         if name.is_builtin() {
             let i = name.0 as usize;
             if builtins::is_function(i) {

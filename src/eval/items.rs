@@ -500,6 +500,7 @@ fn declared_texture(item: &Item) -> Option<(bool, &LValue)> {
             local,
             target,
             value: Rhs::Block(b),
+            ..
         } if b.keyword.name == "texture" && target.indices.is_empty() => Some((*local, target)),
         _ => None,
     }

@@ -214,6 +214,7 @@ pub fn eval_cached(
         written: Default::default(),
         open_writes: Vec::new(),
         files_seen: Default::default(),
+        deprecated: Default::default(),
     };
     ev.define_command_line();
     ev.run_top(&file.items);
@@ -293,6 +294,9 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) written: file_io::Overlay,
     /// Files opened for writing, closed at the end if the scene does not.
     pub(crate) open_writes: Vec<std::rc::Rc<std::cell::RefCell<file_io::OpenFile>>>,
+    /// Names declared `deprecated`, with whether a `once` warning was given.
+    pub(crate) deprecated:
+        rustc_hash::FxHashMap<crate::syntax::Sym, (ast::Deprecation, std::cell::Cell<bool>)>,
     /// Names ever opened by `#fopen` (closing one twice is allowed).
     pub(crate) files_seen: rustc_hash::FxHashSet<crate::syntax::Sym>,
 }

@@ -186,7 +186,9 @@ impl Shift {
                 local,
                 target,
                 value,
+                deprecated,
             } => DirectiveKind::Declare {
+                deprecated: deprecated.clone(),
                 local: *local,
                 target: self.lvalue(target),
                 value: match value {
@@ -357,6 +359,10 @@ impl Shift {
                 init: init.as_ref().map(|i| self.array_init(i)),
             },
             ExprKind::Block(b) => ExprKind::Block(Box::new(self.block(b))),
+            ExprKind::Directive(d) => ExprKind::Directive(Box::new(Directive {
+                kind: self.directive(&d.kind),
+                span: self.span(d.span),
+            })),
         };
         Expr {
             kind,

@@ -358,6 +358,7 @@ impl Builder<'_> {
                 local,
                 target,
                 value,
+                ..
             } => {
                 for i in &target.indices {
                     self.expr(i);
@@ -614,6 +615,7 @@ impl Builder<'_> {
                 }
             }
             ExprKind::Block(b) => self.block_in_expr(b),
+            ExprKind::Directive(d) => self.directive(&d.kind, d.span, None, d.span.file),
         }
     }
 
@@ -641,6 +643,7 @@ fn outline_item(item: &Item, file: FileId) -> Option<Vec<OutlineItem>> {
                 target,
                 value,
                 local,
+                ..
             } if target.indices.is_empty() => {
                 let detail = match value {
                     Rhs::Block(b) => format!("{} {{ … }}", b.keyword.name),

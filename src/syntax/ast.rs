@@ -167,6 +167,15 @@ pub enum MessageKind {
     Error,
 }
 
+/// `deprecated [once] "MESSAGE"` in a declaration.
+#[derive(Clone, Debug)]
+pub struct Deprecation {
+    /// `once`: warn at the first use only.
+    pub once: bool,
+    /// The message.
+    pub message: Rc<str>,
+}
+
 /// How `#fopen` opens a file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum OpenMode {
@@ -210,6 +219,9 @@ pub enum DirectiveKind {
         target: LValue,
         /// The value.
         value: Rhs,
+        /// `#declare deprecated [once] "MESSAGE" NAME = …`: uses of the name warn
+        /// with MESSAGE (only the first use with `once`).
+        deprecated: Option<Deprecation>,
     },
     /// `#undef NAME`.
     Undef {
@@ -448,6 +460,8 @@ pub enum ExprKind {
     },
     /// `keyframes { … }` as an operand: `2 * keyframes { key 0, 1 key 1, 3 }`.
     Block(Box<Block>),
+    /// `#if (C) A #else B #end` as an operand: the chosen branch gives the value.
+    Directive(Box<Directive>),
     /// `array[N]…[M] { … }`.
     Array {
         /// The sizes.

@@ -112,7 +112,24 @@ impl Lowerer {
         let kind = match rule {
             Rule::declare_d => {
                 let local = inner.next().expect("kind").as_str() == "local";
-                let target = self.lvalue(inner.next().expect("lvalue"));
+                let mut next = inner.next().expect("lvalue");
+                let mut deprecated = None;
+                if next.as_rule() == Rule::deprecated {
+                    let mut parts = next.into_inner();
+                    parts.next();
+                    let mut p = parts.next().expect("message");
+                    let once = p.as_rule() == Rule::once_kw;
+                    if once {
+                        p = parts.next().expect("message");
+                    }
+                    let text = self.unescape(&p.into_inner().next().expect("string inner"));
+                    deprecated = Some(Deprecation {
+                        once,
+                        message: Rc::from(text),
+                    });
+                    next = inner.next().expect("lvalue");
+                }
+                let target = self.lvalue(next);
                 let v = inner.next().expect("rhs");
                 let value = match v.as_rule() {
                     Rule::block => Rhs::Block(Box::new(self.block(v))),
@@ -125,6 +142,7 @@ impl Lowerer {
                     local,
                     target,
                     value,
+                    deprecated,
                 }
             }
             Rule::undef_d => {
@@ -476,6 +494,10 @@ impl Lowerer {
             }
             Rule::vector => Expr {
                 kind: ExprKind::Vector(p.into_inner().map(|x| self.expr(x)).collect()),
+                span,
+            },
+            Rule::if_d | Rule::ifdef_d | Rule::switch_d => Expr {
+                kind: ExprKind::Directive(Box::new(self.directive(p))),
                 span,
             },
             Rule::paren => {

@@ -41,6 +41,8 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         Rule::kw_read => "`read`",
         Rule::kw_write => "`write`",
         Rule::decl_kind => "`declare` or `local`",
+        Rule::deprecated | Rule::kw_deprecated => return None,
+        Rule::once_kw => "`once`",
         Rule::lvalue | Rule::ident_name | Rule::ident | Rule::ident_raw => "a name",
         Rule::rhs => "a value",
         Rule::elseif_d | Rule::kw_elseif => "`#elseif`",

@@ -24,11 +24,11 @@ import tempfile
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
-def first_error(rts: pathlib.Path, scene: pathlib.Path, timeout: float) -> str | None:
+def first_error(rts: pathlib.Path, scene: pathlib.Path, timeout: float, extra: list[str]) -> str | None:
     """The first error of `rts check` on `scene` as "code | message", or None."""
     try:
         p = subprocess.run(
-            [str(rts), "check", "--message-format", "json", scene.name],
+            [str(rts), "check", "--message-format", "json", *extra, scene.name],
             cwd=scene.parent,
             capture_output=True,
             text=True,
@@ -48,12 +48,12 @@ def first_error(rts: pathlib.Path, scene: pathlib.Path, timeout: float) -> str |
     return None
 
 
-def renders(rts: pathlib.Path, scene: pathlib.Path, timeout: float) -> bool:
+def renders(rts: pathlib.Path, scene: pathlib.Path, timeout: float, extra: list[str]) -> bool:
     """Whether `rts render` of `scene` at 80x60 succeeds."""
     with tempfile.TemporaryDirectory() as tmp:
         try:
             p = subprocess.run(
-                [str(rts), "render", scene.name, "-o", f"{tmp}/out.png", "-W", "80", "-H", "60", "-q"],
+                [str(rts), "render", *extra, scene.name, "-o", f"{tmp}/out.png", "-W", "80", "-H", "60", "-q"],
                 cwd=scene.parent,
                 capture_output=True,
                 timeout=timeout,
@@ -70,19 +70,28 @@ def main() -> int:
     ap.add_argument("--render", action="store_true", help="also render the clean scenes at 80x60")
     ap.add_argument("--list", action="store_true", help="print every scene with its first error")
     ap.add_argument("--timeout", type=float, default=60)
+    ap.add_argument(
+        "--library",
+        type=pathlib.Path,
+        action="append",
+        default=[],
+        help="search DIR for include and data files (rts -I DIR), as a POV-Ray user's Library_Path "
+        "would: e.g. /usr/share/povray-3.7/include, which then comes before rts's own include files",
+    )
     args = ap.parse_args()
     if not args.scenes.is_dir():
         print(f"no sample scenes at {args.scenes} (apt-get install -y povray-examples)", file=sys.stderr)
         return 2
     scenes = sorted(args.scenes.rglob("*.pov"))
-    errors: dict[pathlib.Path, str | None] = {s: first_error(args.rts, s, args.timeout) for s in scenes}
+    extra = [a for d in args.library for a in ("-I", str(d))]
+    errors: dict[pathlib.Path, str | None] = {s: first_error(args.rts, s, args.timeout, extra) for s in scenes}
     clean = [s for s, e in errors.items() if e is None]
     if args.list:
         for s, e in errors.items():
             print(f"{s.relative_to(args.scenes)}: {e or 'ok'}")
     print(f"{len(clean)} of {len(scenes)} scenes check clean")
     if args.render:
-        failed = [s for s in clean if not renders(args.rts, s, args.timeout)]
+        failed = [s for s in clean if not renders(args.rts, s, args.timeout, extra)]
         print(f"{len(clean) - len(failed)} of them render at 80x60" + "".join(f"\n  failed: {s}" for s in failed))
     tally = collections.Counter(e for e in errors.values() if e is not None)
     print("first errors, most common first:")

@@ -142,8 +142,8 @@ impl Evaluator<'_> {
             )
             .into());
         }
-        let items: Vec<&Item> = b
-            .items
+        let expanded = self.expand_static(&b.items)?;
+        let items: Vec<&Item> = expanded
             .iter()
             .filter(|i| !matches!(i, Item::Semicolon(_)))
             .collect();
@@ -295,11 +295,44 @@ impl Evaluator<'_> {
                     || parts.iter().any(|(_, p)| self.uses_params(p, env))
             }
             ExprKind::Array { .. } => false,
+            // Compiled only as a constant; a branch using parameters is refused below.
+            ExprKind::Directive(_) => true,
         }
     }
 
     /// Compiles `e` (a float) onto `out`.
+    /// A function body with its `#if`/`#ifdef`/`#switch` directives replaced by the
+    /// branches they choose now (POV-Ray chooses while parsing the body).
+    fn expand_static(&mut self, items: &[Item]) -> R<Vec<Item>> {
+        let mut out = Vec::with_capacity(items.len());
+        for item in items {
+            if let Item::Directive(d) = item {
+                if let Some(chosen) = self.chosen_items(d)? {
+                    out.extend(self.expand_static(&chosen)?);
+                    continue;
+                }
+            }
+            out.push(item.clone());
+        }
+        Ok(out)
+    }
+
     fn compile(&mut self, e: &Expr, env: &mut Env, out: &mut Vec<Op>) -> R<()> {
+        if let ExprKind::Directive(d) = &e.kind {
+            let chosen = self.chosen_items(d)?.unwrap_or_default();
+            let chosen = self.expand_static(&chosen)?;
+            let mut exprs = chosen.iter().filter(|i| !matches!(i, Item::Semicolon(_)));
+            return match (exprs.next(), exprs.next()) {
+                (Some(Item::Expr(inner)), None) => self.compile(inner, env, out),
+                _ => Err(Diagnostic::error(
+                    codes::TYPE_MISMATCH,
+                    d.span,
+                    "the branch chosen here must hold one expression",
+                )
+                .with_help("write one expression in each branch: `#if (C) x*2 #else x #end`")
+                .into()),
+            };
+        }
         if !self.uses_params(e, env) {
             let v = self.expr(e)?;
             return match v {
