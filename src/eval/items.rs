@@ -131,10 +131,13 @@ impl Evaluator<'_> {
                 let t = self.undefer(&b, None);
                 return self.place(t);
             }
-            Tok::Block(_, Value::Object(o), _) => {
+            Tok::Block(_, Value::Object(o), span) => {
                 let mut o = Arc::try_unwrap(o).unwrap_or_else(|a| (*a).clone());
                 if o.texture.is_none() {
                     o.texture = Some(self.default_texture.clone());
+                }
+                for l in super::lights::take_lights(&mut o, None) {
+                    self.place(Tok::Block("light_source", Value::Light(Arc::new(l)), span));
                 }
                 self.scene.objects.push(o);
                 return;

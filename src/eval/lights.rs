@@ -375,6 +375,39 @@ fn move_light(light: &mut Light, transform: &mut Transform, t: &Transform) {
     *transform = transform.then(t);
 }
 
+/// Takes the lights out of a placed object and its CSG members, each moved by the
+/// transforms of the objects it was written in (innermost first), then `outer`.
+pub(crate) fn take_lights(obj: &mut crate::scene::Object, outer: Option<&Transform>) -> Vec<Light> {
+    let t = match (&obj.transform, outer) {
+        (Some(own), Some(o)) => Some(own.then(o)),
+        (Some(own), None) => Some((**own).clone()),
+        (None, Some(o)) => Some(o.clone()),
+        (None, None) => None,
+    };
+    let mut out = Vec::new();
+    for mut l in std::mem::take(&mut obj.lights) {
+        if let Some(t) = &t {
+            transform_light(&mut l, t);
+            if let Some(o) = &mut l.looks_like {
+                let o = Arc::make_mut(o);
+                o.transform = Some(Arc::new(match &o.transform {
+                    Some(own) => own.then(t),
+                    None => t.clone(),
+                }));
+            }
+        }
+        out.push(l);
+    }
+    if let crate::scene::Shape::Union { children } | crate::scene::Shape::Csg { children, .. } =
+        &mut obj.shape
+    {
+        for c in children {
+            out.extend(take_lights(c, t.as_ref()));
+        }
+    }
+    out
+}
+
 /// Moves a light's location, aim and area axes by `t`.
 fn transform_light(light: &mut Light, t: &Transform) {
     light.location = t.point(light.location);

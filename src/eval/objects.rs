@@ -162,9 +162,20 @@ impl Evaluator<'_> {
             }
             "union" | "merge" | "intersection" | "difference" => {
                 let mut children = Vec::new();
-                while let Some(Tok::Block(_, Value::Object(_) | Value::Poison, _)) = c.peek() {
-                    if let Some(Tok::Block(_, Value::Object(o), _)) = c.next() {
-                        children.push(Arc::try_unwrap(o).unwrap_or_else(|a| (*a).clone()));
+                let mut lights = Vec::new();
+                while let Some(Tok::Block(
+                    _,
+                    Value::Object(_) | Value::Light(_) | Value::Poison,
+                    _,
+                )) = c.peek()
+                {
+                    match c.next() {
+                        Some(Tok::Block(_, Value::Object(o), _)) => {
+                            children.push(Arc::try_unwrap(o).unwrap_or_else(|a| (*a).clone()))
+                        }
+                        // As in POV-Ray, a light among a CSG's members moves with it.
+                        Some(Tok::Block(_, Value::Light(l), _)) => lights.push((*l).clone()),
+                        _ => {}
                     }
                 }
                 let kw = c.block;
@@ -190,6 +201,7 @@ impl Evaluator<'_> {
                     _ => Shape::Union { children },
                 };
                 let mut obj = Object::new(shape, span);
+                obj.lights = lights;
                 self.modifiers(&mut obj, c, true);
                 return Ok(obj);
             }

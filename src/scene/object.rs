@@ -41,6 +41,11 @@ pub struct Object {
     /// `clipped_by { … }`: only the parts of the shape inside all of these remain
     /// (the clipping objects' own surfaces are not added).
     pub clipped_by: Option<Arc<Vec<Object>>>,
+    /// Light sources written among a CSG object's members (`union { light_source
+    /// { … } sphere { … } }`), in the object's space: they move with it, as in
+    /// POV-Ray. The evaluator takes them out into the scene's lights when the
+    /// object is placed, so the renderer never sees them here.
+    pub lights: Vec<super::Light>,
     /// Where the object was written.
     pub span: Span,
 }
@@ -55,6 +60,7 @@ impl Object {
             interior: None,
             flags: ObjectFlags::default(),
             clipped_by: None,
+            lights: Vec::new(),
             span,
         }
     }
