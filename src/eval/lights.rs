@@ -380,8 +380,8 @@ fn move_light(light: &mut Light, transform: &mut Transform, t: &Transform) {
 pub(crate) fn take_lights(obj: &mut crate::scene::Object, outer: Option<&Transform>) -> Vec<Light> {
     let t = match (&obj.transform, outer) {
         (Some(own), Some(o)) => Some(own.then(o)),
-        (Some(own), None) => Some((**own).clone()),
-        (None, Some(o)) => Some(o.clone()),
+        (Some(own), None) => Some(**own),
+        (None, Some(o)) => Some(*o),
         (None, None) => None,
     };
     let mut out = Vec::new();
@@ -392,7 +392,7 @@ pub(crate) fn take_lights(obj: &mut crate::scene::Object, outer: Option<&Transfo
                 let o = Arc::make_mut(o);
                 o.transform = Some(Arc::new(match &o.transform {
                     Some(own) => own.then(t),
-                    None => t.clone(),
+                    None => *t,
                 }));
             }
         }
