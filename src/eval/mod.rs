@@ -22,6 +22,7 @@ mod keyframe;
 mod lights;
 mod material_block;
 mod materials;
+mod media;
 mod mesh;
 mod mesh_cache;
 mod modify;
@@ -205,6 +206,7 @@ pub fn eval_cached(
         defer_material_blocks: false,
         built_objects: Default::default(),
         blob_items: false,
+        density_block: false,
         pending_function: None,
     };
     ev.define_command_line();
@@ -278,6 +280,9 @@ pub(crate) struct Evaluator<'a> {
     /// Set while the items of a `blob` are read: there a `sphere` or `cylinder`
     /// block is a blob component (see `blob.rs`).
     pub(crate) blob_items: bool,
+    /// Set while a media's `density { }` is read: it starts from density 1 and
+    /// its patterns' default map runs from 0 to 1.
+    pub(crate) density_block: bool,
     /// A `function { }` met as a pattern, until the pattern reader takes it.
     pub(crate) pending_function: Option<Arc<function::Function>>,
 }

@@ -311,7 +311,7 @@ impl Evaluator<'_> {
             {
                 super::materials::check_not_patterned(obj.texture.as_ref(), kw, span)?;
             }
-            Tok::Block(_, Value::Interior(i), _) => obj.interior = Some(i),
+            Tok::Block(_, Value::Interior(i), _) => obj.interior = Some(attach_interior(obj, i)),
             Tok::Block(_, Value::Material(m), span) => {
                 if let Some(t) = &m.texture {
                     let top = attach(obj, (**t).clone());
@@ -322,7 +322,7 @@ impl Evaluator<'_> {
                     )?);
                 }
                 if let Some(i) = &m.interior {
-                    obj.interior = Some(i.clone());
+                    obj.interior = Some(attach_interior(obj, i.clone()));
                 }
             }
             Tok::Block(_, Value::Normal(n), _) => {
@@ -588,6 +588,25 @@ fn attach(obj: &Object, mut tex: Texture) -> Arc<Texture> {
         tex.transform_patterns(&inv);
     }
     Arc::new(tex)
+}
+
+/// Attaches an interior given now: as a texture's patterns, its media's densities
+/// stay where they are in the world (later transforms of the object move them).
+fn attach_interior(obj: &Object, i: Arc<crate::scene::Interior>) -> Arc<crate::scene::Interior> {
+    match obj.transform.as_deref() {
+        Some(ot) if !i.media.is_empty() => {
+            let inv = Transform {
+                matrix: ot.inverse,
+                inverse: ot.matrix,
+            };
+            let mut own = (*i).clone();
+            for m in &mut own.media {
+                m.transform(&inv);
+            }
+            Arc::new(own)
+        }
+        _ => i,
+    }
 }
 
 /// Builds the transform POV-Ray's `matrix <12 numbers>` describes (rows of a 4×3

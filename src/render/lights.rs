@@ -92,6 +92,9 @@ pub fn incident(
             _ => shadow(world, p, geo_n, dir, dist, index, ctx),
         };
         colour *= seen;
+        if light.media_attenuation && world.has_media && colour != DVec3::ZERO {
+            colour *= super::media::shadow_attenuation(world, p, dir, dist, ctx);
+        }
         if colour == DVec3::ZERO {
             return None;
         }
