@@ -17,7 +17,7 @@ pub struct Media {
     pub method: u8,
     /// `intervals` (default 1): how many pieces the lit part of a ray is cut into.
     pub intervals: u32,
-    /// `samples Min[, Max]` (default 1, 1).
+    /// `samples Min[, Max]` (default 10, 10, as measured on POV-Ray 3.7).
     pub min_samples: u32,
     /// The most samples per interval (methods 1 and 2 add samples up to it while
     /// the variance is too high).
@@ -51,8 +51,8 @@ impl Default for Media {
         Media {
             method: 3,
             intervals: 1,
-            min_samples: 1,
-            max_samples: 1,
+            min_samples: 10,
+            max_samples: 10,
             confidence: 0.9,
             variance: 1.0 / 128.0,
             ratio: 0.9,
