@@ -884,14 +884,7 @@ impl Evaluator<'_> {
             Self::complete_list(&kind, &mut l);
             PatternMap::List(l)
         } else {
-            spec.map.take().unwrap_or_else(|| {
-                if self.density_block {
-                    // Densities run from 0 to 1 whatever the pattern.
-                    default_map(&PatternKind::Gradient(glam::DVec3::Y))
-                } else {
-                    default_map(&kind)
-                }
-            })
+            spec.map.take().unwrap_or_else(|| default_map(&kind))
         };
         Pattern::Mapped(Box::new(Mapped { kind, mods, map }))
     }

@@ -101,7 +101,9 @@ impl Evaluator<'_> {
                         Some((h, hs)) if !in_range(h) || h < lo => {
                             return Err(range(
                                 hs,
-                                format!("the most samples must be {lo} to {MAX_SAMPLES}, found {h}"),
+                                format!(
+                                    "the most samples must be {lo} to {MAX_SAMPLES}, found {h}"
+                                ),
                                 "the second number is the most samples, not less than the first",
                             ));
                         }
@@ -174,14 +176,13 @@ impl Evaluator<'_> {
                 }
                 Tok::Kw(kw @ ("absorption" | "emission"), span) => {
                     c.once(kw, span)?;
-                    self.take_colour(c, &format!("the {kw} colour"))
-                        .map(|col| {
-                            if kw == "absorption" {
-                                m.absorption = col.rgb;
-                            } else {
-                                m.emission = col.rgb;
-                            }
-                        })
+                    self.take_colour(c, &format!("the {kw} colour")).map(|col| {
+                        if kw == "absorption" {
+                            m.absorption = col.rgb;
+                        } else {
+                            m.emission = col.rgb;
+                        }
+                    })
                 }
                 Tok::Block("scattering", Value::Scattering(s), span) => {
                     if m.scattering.is_some() {
@@ -208,7 +209,12 @@ impl Evaluator<'_> {
                     m.transform(&t);
                     Ok(())
                 }
-                other => Err(self.unexpected(c, &other, MEDIA_ITEMS)),
+                other => {
+                    let f = self.unexpected(c, &other, MEDIA_ITEMS);
+                    // The unknown keyword's value is not reported again.
+                    c.poisoned = matches!(other, Tok::Kw(..));
+                    Err(f)
+                }
             };
             if let Err(f) = r {
                 self.report(f);
@@ -264,9 +270,14 @@ impl Evaluator<'_> {
                 }
                 Tok::Kw("extinction", span) => {
                     c.once("extinction", span)?;
-                    self.take_float(c, "the extinction").map(|x| sc.extinction = x)
+                    self.take_float(c, "the extinction")
+                        .map(|x| sc.extinction = x)
                 }
-                other => Err(self.unexpected(c, &other, SCATTERING_ITEMS)),
+                other => {
+                    let f = self.unexpected(c, &other, SCATTERING_ITEMS);
+                    c.poisoned = matches!(other, Tok::Kw(..));
+                    Err(f)
+                }
             };
             if let Err(f) = r {
                 self.report(f);
@@ -277,7 +288,9 @@ impl Evaluator<'_> {
 
     /// `density { [DENSITY_IDENTIFIER] [PATTERN] [density_map { … }] modifiers
     /// transforms }`: a pigment whose colour scales a media's coefficients. Without
-    /// a pattern it is 1 everywhere; a pattern without a map runs from 0 to 1.
+    /// a pattern it is 1 everywhere; a pattern without a map takes the pattern's
+    /// default colour map, as in a pigment (measured: `bozo` is white, green,
+    /// blue and red).
     pub(crate) fn density(&mut self, c: &mut Cursor) -> R<Pigment> {
         let outer = std::mem::replace(&mut self.density_block, true);
         let r = self.pigment(c);
@@ -290,7 +303,11 @@ impl Evaluator<'_> {
         let (v, s) = c.value(what)?;
         let x = self.to_float(&v, s)?;
         if !x.is_finite() || x.abs() > 1e9 {
-            return Err(range(s, format!("{what} is too large: {x}"), "use a small whole number"));
+            return Err(range(
+                s,
+                format!("{what} is too large: {x}"),
+                "use a small whole number",
+            ));
         }
         // POV-Ray truncates these to integers.
         Ok((x.trunc() as i64, s))

@@ -280,8 +280,7 @@ pub(crate) struct Evaluator<'a> {
     /// Set while the items of a `blob` are read: there a `sphere` or `cylinder`
     /// block is a blob component (see `blob.rs`).
     pub(crate) blob_items: bool,
-    /// Set while a media's `density { }` is read: it starts from density 1 and
-    /// its patterns' default map runs from 0 to 1.
+    /// Set while a media's `density { }` is read: it starts from density 1.
     pub(crate) density_block: bool,
     /// A `function { }` met as a pattern, until the pattern reader takes it.
     pub(crate) pending_function: Option<Arc<function::Function>>,

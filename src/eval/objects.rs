@@ -266,9 +266,34 @@ impl Evaluator<'_> {
 
     /// The modifiers after an object's parameters; errors are reported and skipped.
     fn modifiers(&mut self, obj: &mut Object, c: &mut Cursor, is_union: bool) {
+        let mut media_at = None;
         while let Some(tok) = c.next() {
+            match &tok {
+                Tok::Block(_, Value::Interior(i), s) if !i.media.is_empty() => media_at = Some(*s),
+                Tok::Block(_, Value::Material(m), s)
+                    if m.interior.as_ref().is_some_and(|i| !i.media.is_empty()) =>
+                {
+                    media_at = Some(*s)
+                }
+                _ => {}
+            }
             if let Err(f) = self.modifier(obj, c, tok, is_union) {
                 self.report(f);
+            }
+        }
+        if let Some(span) = media_at {
+            if !obj.flags.hollow {
+                // As in POV-Ray, media (and fog) act only where every object a
+                // ray is in is hollow: in a solid object the media is not seen.
+                self.warn(
+                    Diagnostic::warning(
+                        codes::MEDIA_NOT_HOLLOW,
+                        span,
+                        "this object's media will not be seen: the object is not hollow",
+                    )
+                    .with_label("media inside a solid object")
+                    .with_help("add `hollow` to the object, as POV-Ray requires for media"),
+                );
             }
         }
     }

@@ -599,7 +599,9 @@ impl Sampling<'_> {
             while s.samples < lead.max_samples {
                 let k = 1.0 / f64::from(s.samples.max(1));
                 let va = (s.te2 * k - (s.te * k) * (s.te * k)) * k;
-                let limit = thresholds[(s.samples as usize).saturating_sub(1).min(thresholds.len() - 1)];
+                let limit = thresholds[(s.samples as usize)
+                    .saturating_sub(1)
+                    .min(thresholds.len() - 1)];
                 if va.abs().max_element() < limit {
                     break;
                 }
@@ -685,13 +687,31 @@ impl Sampling<'_> {
         // As POV-Ray 3.7 weighs them: each half gives half of the result; an
         // unrefined half weighs its outer end twice its middle.
         let (mut res, mut od_res) = if distance(c.0, c2) > threshold {
-            let (r, o) = self.refine(iv, (d.0, mid), (c.0, c2), (od.0, od2), depth - 1, jitter, threshold, ctx);
+            let (r, o) = self.refine(
+                iv,
+                (d.0, mid),
+                (c.0, c2),
+                (od.0, od2),
+                depth - 1,
+                jitter,
+                threshold,
+                ctx,
+            );
             (r / 2.0, o / 2.0)
         } else {
             (c.0 / 3.0 + c2 / 6.0, od.0 / 3.0 + od2 / 6.0)
         };
         if distance(c2, c.1) > threshold {
-            let (r, o) = self.refine(iv, (mid, d.1), (c2, c.1), (od2, od.1), depth - 1, jitter, threshold, ctx);
+            let (r, o) = self.refine(
+                iv,
+                (mid, d.1),
+                (c2, c.1),
+                (od2, od.1),
+                depth - 1,
+                jitter,
+                threshold,
+                ctx,
+            );
             res += r / 2.0;
             od_res += o / 2.0;
         } else {
@@ -767,7 +787,11 @@ fn thresholds(m: &Media) -> Vec<f64> {
         return vec![0.0];
     }
     let t = chi2_inverse_upper((max - 1) as f64, m.confidence);
-    let t = if t > 0.0 { m.variance / t } else { m.variance * 1e-10 };
+    let t = if t > 0.0 {
+        m.variance / t
+    } else {
+        m.variance * 1e-10
+    };
     (0..max)
         .map(|i| t * chi2_inverse_upper((i + 1) as f64, m.confidence))
         .collect()
@@ -925,9 +949,21 @@ mod tests {
     #[test]
     fn intervals_share_out_by_ratio() {
         let lit = vec![
-            Interval { lit: false, s0: 0.0, s1: 4.0 },
-            Interval { lit: true, s0: 4.0, s1: 6.0 },
-            Interval { lit: false, s0: 6.0, s1: 10.0 },
+            Interval {
+                lit: false,
+                s0: 0.0,
+                s1: 4.0,
+            },
+            Interval {
+                lit: true,
+                s0: 4.0,
+                s1: 6.0,
+            },
+            Interval {
+                lit: false,
+                s0: 6.0,
+                s1: 10.0,
+            },
         ];
         let m = Media::default();
         let iv = sample_intervals(&lit, &m, 10.0);
