@@ -903,25 +903,26 @@ mod tests {
     fn phase_functions_are_povray_scaled() {
         let iso = Media::default();
         assert_eq!(phase(&[&iso], 0.3), 1.0);
-        let mut hg = Media::default();
-        hg.scattering = Some(crate::scene::Scattering {
-            kind: ScatteringKind::HenyeyGreenstein,
-            colour: DVec3::ONE,
-            eccentricity: 0.0,
-            extinction: 1.0,
-        });
+        let hg = Media {
+            scattering: Some(crate::scene::Scattering {
+                kind: ScatteringKind::HenyeyGreenstein,
+                colour: DVec3::ONE,
+                eccentricity: 0.0,
+                extinction: 1.0,
+            }),
+            ..Media::default()
+        };
         assert!((phase(&[&hg], -0.7) - 1.0).abs() < 1e-12);
         // Rayleigh is symmetric, the Mie types peak forwards (towards the light),
         // murky more sharply than haze; all are positive.
-        let with = |kind| {
-            let mut m = Media::default();
-            m.scattering = Some(crate::scene::Scattering {
+        let with = |kind| Media {
+            scattering: Some(crate::scene::Scattering {
                 kind,
                 colour: DVec3::ONE,
                 eccentricity: 0.0,
                 extinction: 1.0,
-            });
-            m
+            }),
+            ..Media::default()
         };
         let (r, h, m) = (
             with(ScatteringKind::Rayleigh),
