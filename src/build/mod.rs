@@ -87,6 +87,16 @@ pub struct World {
     pub transparent: bool,
     /// Per primitive, whether it may let light through (see `transparent`).
     pub translucent: Vec<bool>,
+    /// Whether there are media anywhere (atmospheric or in an interior).
+    pub has_media: bool,
+    /// Whether some interior holds media.
+    pub object_media: bool,
+    /// Whether rays keep track of the objects they are in (there are media or
+    /// fog, which only act where every such object is hollow).
+    pub tracks_interiors: bool,
+    /// The primitives whose inside holds the camera's location (when
+    /// `tracks_interiors`).
+    pub camera_inside: Vec<u32>,
 }
 
 /// Flattens `scene` and builds its acceleration structure. Unions are flattened
@@ -136,7 +146,14 @@ pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
     let bvh = Bvh::build(&items);
     let unbounded = (items.len() as u32..prims.len() as u32).collect();
     let translucent = transparency::translucent(&prims);
-    World {
+    let with_media = |i: &Option<Arc<Interior>>| i.as_ref().is_some_and(|i| !i.media.is_empty());
+    let object_media = prims.iter().any(|p| {
+        with_media(&p.interior)
+            || matches!(&p.shape, PrimShape::Csg(c) if c.leaves.iter().any(|l| with_media(&l.interior)))
+    });
+    let has_media = object_media || !scene.atmosphere.media.is_empty();
+    let tracks_interiors = has_media || !scene.atmosphere.fogs.is_empty();
+    let mut world = World {
         camera: scene.camera,
         lights: scene.lights.clone(),
         background: scene.background.rgb,
@@ -148,7 +165,23 @@ pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
         primitives: prims,
         unbounded,
         bvh,
+        has_media,
+        object_media,
+        tracks_interiors,
+        camera_inside: Vec::new(),
+    };
+    if tracks_interiors {
+        let at = world.camera.location;
+        world.camera_inside = (0..world.primitives.len() as u32)
+            .filter(|&i| {
+                let p = &world.primitives[i as usize];
+                p.bounds
+                    .is_none_or(|b| at.cmpge(b.min).all() && at.cmple(b.max).all())
+                    && p.inside(at)
+            })
+            .collect();
     }
+    world
 }
 
 /// What [`World::shadow_blockers`] found on a shadow ray.
@@ -268,7 +301,21 @@ impl Builder {
             } else {
                 inh.texture_space
             },
-            interior: obj.interior.clone().or_else(|| inh.interior.clone()),
+            interior: match &obj.interior {
+                // A media's densities are kept in the object's frame: placed in
+                // the world here, so the renderer evaluates them at world points.
+                Some(i) if !i.media.is_empty() && world_from_obj.is_some() => {
+                    let mut own = (**i).clone();
+                    if let Some(w) = &world_from_obj {
+                        for m in &mut own.media {
+                            m.transform(w);
+                        }
+                    }
+                    Some(Arc::new(own))
+                }
+                Some(i) => Some(i.clone()),
+                None => inh.interior.clone(),
+            },
             flags: or_flags(inh.flags, obj.flags),
         };
         (world_from_obj, here)
@@ -575,6 +622,8 @@ pub struct SurfaceHit<'a> {
     pub interior: Option<&'a Arc<Interior>>,
     /// The primitive's flags.
     pub flags: ObjectFlags,
+    /// The primitive's index in [`World::primitives`].
+    pub prim: u32,
     /// A `blob` whose components have textures of their own, and the point in
     /// its space: the shader blends the components' textures there.
     pub blob: Option<(&'a shapes::blob::Blob, DVec3)>,
@@ -649,6 +698,7 @@ impl World {
             texture_from_world,
             interior,
             flags: prim.flags,
+            prim: hit.prim,
         }
     }
 

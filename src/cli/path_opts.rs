@@ -13,6 +13,20 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
+/// Whether `scene` has media (atmospheric, or in any object's interior).
+fn has_media(scene: &Scene) -> bool {
+    fn object(o: &rts::scene::Object) -> bool {
+        o.interior.as_ref().is_some_and(|i| !i.media.is_empty())
+            || match &o.shape {
+                rts::scene::Shape::Union { children } | rts::scene::Shape::Csg { children, .. } => {
+                    children.iter().any(object)
+                }
+                _ => false,
+            }
+    }
+    !scene.atmosphere.media.is_empty() || scene.objects.iter().any(object)
+}
+
 /// Most samples per pixel (the period of the per-pixel Sobol sequence).
 const MAX_SPP: u32 = 1 << 16;
 
@@ -212,6 +226,14 @@ pub fn run(
     }
     if args.antialias.is_some() {
         return fail("--antialias is for the classic renderer; the path tracer takes --spp".into());
+    }
+    if has_media(scene) {
+        // Once per render: the path tracer has no participating media yet.
+        eprintln!(
+            "warning[{}]: the path tracer ignores media: this scene's `media` is not rendered \
+             (render with --integrator classic to see it)",
+            rts::diag::codes::MEDIA_IGNORED
+        );
     }
     let mut p = args.path.clone();
     if p.spp.is_none() {

@@ -116,3 +116,8 @@ pub const KEY_OUTSIDE_TIMELINE: &str = "rts::anim::key_outside_timeline";
 pub const FUNCTION_LIMIT: &str = "rts::limit::function_complexity";
 /// An isosurface's `max_gradient` is below the gradient measured in its container.
 pub const MAX_GRADIENT: &str = "rts::lint::max_gradient";
+/// An object with media in its interior that is not `hollow`: its media is not
+/// seen (warning).
+pub const MEDIA_NOT_HOLLOW: &str = "rts::lint::media_not_hollow";
+/// The path tracer renders a scene with media without them (warning).
+pub const MEDIA_IGNORED: &str = "rts::render::media_ignored";

@@ -37,6 +37,10 @@ pub(crate) const BLOCKS: &[&str] = &[
     "background",
     "sky_sphere",
     "fog",
+    "media",
+    "scattering",
+    "density",
+    "density_map",
     "material",
     "looks_like",
     "spline",
@@ -56,7 +60,6 @@ const LATER_BLOCKS: &[&str] = &[
     "irid",
     "warp",
     "normal_map",
-    "media",
     "photons",
     "radiosity",
     "light_group",
@@ -140,7 +143,7 @@ impl Evaluator<'_> {
             "reflection" => Value::Reflection(self.reflection(&mut c)?),
             "normal" => Value::Normal(std::sync::Arc::new(self.normal(&mut c)?)),
             "interior" => Value::Interior(std::sync::Arc::new(self.interior(&mut c)?)),
-            "color_map" | "colour_map" => {
+            "color_map" | "colour_map" | "density_map" => {
                 Value::ColourMap(std::sync::Arc::new(self.colour_map(&mut c)?))
             }
             "pigment_map" => Value::PigmentMap(std::sync::Arc::new(self.pigment_map(&mut c)?)),
@@ -159,6 +162,9 @@ impl Evaluator<'_> {
             }
             "sky_sphere" => Value::SkySphere(std::sync::Arc::new(self.sky_sphere(&mut c)?)),
             "fog" => Value::Fog(std::sync::Arc::new(self.fog(&mut c)?)),
+            "media" => Value::Media(std::sync::Arc::new(self.media(&mut c)?)),
+            "scattering" => Value::Scattering(self.scattering(&mut c)?),
+            "density" => Value::Pigment(std::sync::Arc::new(self.density(&mut c)?)),
             "tiles" => Value::Texture(std::sync::Arc::new(self.tiles(&mut c)?)),
             "material" => Value::Material(std::sync::Arc::new(self.material(&mut c)?)),
             "path_tracing" => {

@@ -158,6 +158,11 @@ impl Evaluator<'_> {
                 self.scene.atmosphere.fogs.push(*f);
                 return;
             }
+            Tok::Block(_, Value::Media(m), _) => {
+                // Atmospheric media: several add up, as in an interior.
+                self.scene.atmosphere.media.push((*m).clone());
+                return;
+            }
             Tok::Block(_, Value::Camera(c), span) => {
                 if let Some(prev) = self.camera_seen {
                     self.warn(

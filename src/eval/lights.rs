@@ -184,12 +184,19 @@ impl Evaluator<'_> {
                 }
                 Tok::Kw(kw @ ("media_interaction" | "media_attenuation"), span) => {
                     c.once(kw, span)?;
-                    // No media yet: the flag is read and has nothing to change.
-                    if c.value_next() {
-                        self.take_float(c, "on or off").map(|_| ())
+                    // `media_interaction [BOOL]`, `media_attenuation [BOOL]`: a
+                    // keyword alone means on.
+                    let on = if c.value_next() {
+                        self.take_float(c, "on or off").map(|x| x > 0.0)?
                     } else {
-                        Ok(())
+                        true
+                    };
+                    if kw == "media_interaction" {
+                        light.media_interaction = on;
+                    } else {
+                        light.media_attenuation = on;
                     }
+                    Ok(())
                 }
                 Tok::Kw(kw, span) if TRANSFORMS.contains(&kw) => self
                     .transform_kw(kw, span, c)

@@ -71,6 +71,7 @@ pub(crate) const INTERIOR_ITEMS: &[&str] = &[
     "caustics",
     "dispersion",
     "dispersion_samples",
+    "media",
 ];
 pub(crate) const IMAGE_MAP_ITEMS: &[&str] = &[
     "png",
@@ -707,7 +708,15 @@ impl Evaluator<'_> {
     /// `pigment { COLOUR | PATTERN [entries] [color_map/pigment_map] modifiers |
     /// image_map { … } | Name … transforms }`.
     pub(crate) fn pigment(&mut self, c: &mut Cursor) -> R<Pigment> {
-        let mut pig = self.default_texture.pigment.clone();
+        let mut pig = if self.density_block {
+            // A media's density is 1 where nothing else is said.
+            Pigment {
+                pattern: Pattern::Solid(Colour::rgb(1.0, 1.0, 1.0)),
+                transform: None,
+            }
+        } else {
+            self.default_texture.pigment.clone()
+        };
         let mut pattern_given = false;
         let mut spec = self.new_spec();
         let mut modified = false;
@@ -942,7 +951,7 @@ impl Evaluator<'_> {
     pub(crate) fn interior(&mut self, c: &mut Cursor) -> R<Interior> {
         let mut i = match c.peek() {
             Some(Tok::Val(Value::Interior(_), _)) => match c.next() {
-                Some(Tok::Val(Value::Interior(x), _)) => *x,
+                Some(Tok::Val(Value::Interior(x), _)) => (*x).clone(),
                 _ => unreachable!(),
             },
             Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
@@ -974,6 +983,11 @@ impl Evaluator<'_> {
                 Tok::Kw("fade_color" | "fade_colour", _) => self
                     .take_colour(c, "the fade colour")
                     .map(|x| i.fade_colour = x.rgb),
+                Tok::Block("media", Value::Media(m), _) => {
+                    // Several media in one interior add up.
+                    i.media.push((*m).clone());
+                    Ok(())
+                }
                 Tok::Kw("caustics" | "dispersion" | "dispersion_samples", _) => {
                     // Accepted as in POV-Ray; they need photons or spectral rays.
                     self.take_float(c, "a number").map(|_| ())

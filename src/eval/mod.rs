@@ -23,6 +23,7 @@ mod keyframe;
 mod lights;
 mod material_block;
 mod materials;
+mod media;
 mod mesh;
 mod mesh_cache;
 mod modify;
@@ -210,6 +211,7 @@ pub fn eval_cached(
         defer_material_blocks: false,
         built_objects: Default::default(),
         blob_items: false,
+        density_block: false,
         pending_function: None,
         written: Default::default(),
         open_writes: Vec::new(),
@@ -288,6 +290,8 @@ pub(crate) struct Evaluator<'a> {
     /// Set while the items of a `blob` are read: there a `sphere` or `cylinder`
     /// block is a blob component (see `blob.rs`).
     pub(crate) blob_items: bool,
+    /// Set while a media's `density { }` is read: it starts from density 1.
+    pub(crate) density_block: bool,
     /// A `function { }` met as a pattern, until the pattern reader takes it.
     pub(crate) pending_function: Option<Arc<function::Function>>,
     /// Files written by `#write` in this evaluation (see `file_io.rs`).

@@ -278,9 +278,34 @@ impl Evaluator<'_> {
 
     /// The modifiers after an object's parameters; errors are reported and skipped.
     fn modifiers(&mut self, obj: &mut Object, c: &mut Cursor, is_union: bool) {
+        let mut media_at = None;
         while let Some(tok) = c.next() {
+            match &tok {
+                Tok::Block(_, Value::Interior(i), s) if !i.media.is_empty() => media_at = Some(*s),
+                Tok::Block(_, Value::Material(m), s)
+                    if m.interior.as_ref().is_some_and(|i| !i.media.is_empty()) =>
+                {
+                    media_at = Some(*s)
+                }
+                _ => {}
+            }
             if let Err(f) = self.modifier(obj, c, tok, is_union) {
                 self.report(f);
+            }
+        }
+        if let Some(span) = media_at {
+            if !obj.flags.hollow {
+                // As in POV-Ray, media (and fog) act only where every object a
+                // ray is in is hollow: in a solid object the media is not seen.
+                self.warn(
+                    Diagnostic::warning(
+                        codes::MEDIA_NOT_HOLLOW,
+                        span,
+                        "this object's media will not be seen: the object is not hollow",
+                    )
+                    .with_label("media inside a solid object")
+                    .with_help("add `hollow` to the object, as POV-Ray requires for media"),
+                );
             }
         }
     }
@@ -323,7 +348,7 @@ impl Evaluator<'_> {
             {
                 super::materials::check_not_patterned(obj.texture.as_ref(), kw, span)?;
             }
-            Tok::Block(_, Value::Interior(i), _) => obj.interior = Some(i),
+            Tok::Block(_, Value::Interior(i), _) => obj.interior = Some(attach_interior(obj, i)),
             Tok::Block(_, Value::Material(m), span) => {
                 if let Some(t) = &m.texture {
                     let top = attach(obj, (**t).clone());
@@ -334,7 +359,7 @@ impl Evaluator<'_> {
                     )?);
                 }
                 if let Some(i) = &m.interior {
-                    obj.interior = Some(i.clone());
+                    obj.interior = Some(attach_interior(obj, i.clone()));
                 }
             }
             Tok::Block(_, Value::Normal(n), _) => {
@@ -600,6 +625,25 @@ fn attach(obj: &Object, mut tex: Texture) -> Arc<Texture> {
         tex.transform_patterns(&inv);
     }
     Arc::new(tex)
+}
+
+/// Attaches an interior given now: as a texture's patterns, its media's densities
+/// stay where they are in the world (later transforms of the object move them).
+fn attach_interior(obj: &Object, i: Arc<crate::scene::Interior>) -> Arc<crate::scene::Interior> {
+    match obj.transform.as_deref() {
+        Some(ot) if !i.media.is_empty() => {
+            let inv = Transform {
+                matrix: ot.inverse,
+                inverse: ot.matrix,
+            };
+            let mut own = (*i).clone();
+            for m in &mut own.media {
+                m.transform(&inv);
+            }
+            Arc::new(own)
+        }
+        _ => i,
+    }
 }
 
 /// Builds the transform POV-Ray's `matrix <12 numbers>` describes (rows of a 4×3

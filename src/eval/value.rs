@@ -149,6 +149,10 @@ pub enum Value {
     SkySphere(Arc<crate::scene::SkySphere>),
     /// A `fog { … }`.
     Fog(Arc<crate::scene::Fog>),
+    /// A `media { … }`.
+    Media(Arc<crate::scene::Media>),
+    /// A `scattering { … }` (only meaningful inside a media).
+    Scattering(crate::scene::Scattering),
     /// A `material { … }`.
     Material(Arc<super::material_block::Material>),
     /// A transform.
@@ -200,6 +204,8 @@ impl Value {
             Value::Light(_) => "a light source",
             Value::SkySphere(_) => "a sky_sphere",
             Value::Fog(_) => "a fog",
+            Value::Media(_) => "a media",
+            Value::Scattering(_) => "a scattering block",
             Value::Material(_) => "a material",
             Value::Transform(_) => "a transform",
             Value::Reflection(_) => "a reflection block",

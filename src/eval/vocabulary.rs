@@ -92,8 +92,12 @@ pub fn block_keywords(block: &str) -> Option<Vec<&'static str>> {
         "path_tracing" => super::path_tracing::PATH_ITEMS.to_vec(),
         "sky_sphere" => SKY_ITEMS.to_vec(),
         "fog" => FOG_ITEMS.to_vec(),
+        "media" => super::media::MEDIA_ITEMS.to_vec(),
+        "scattering" => super::media::SCATTERING_ITEMS.to_vec(),
+        "density" => pigment_items(),
         "transform" => TRANSFORMS.to_vec(),
-        "color_map" | "colour_map" | "pigment_map" | "texture_map" | "background" => Vec::new(),
+        "color_map" | "colour_map" | "density_map" | "pigment_map" | "texture_map"
+        | "background" => Vec::new(),
         "mesh" => vec!["triangle", "smooth_triangle", "inside_vector"],
         "mesh2" => vec![
             "vertex_vectors",

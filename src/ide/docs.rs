@@ -866,12 +866,12 @@ pub const DOCS: &[Doc] = &[
     kw(
         "confidence",
         "confidence C",
-        "Focal blur: adaptive sampling confidence.",
+        "Focal blur and media methods 1, 2: adaptive sampling confidence.",
     ),
     kw(
         "variance",
         "variance V",
-        "Focal blur: adaptive sampling variance.",
+        "Focal blur and media methods 1, 2: adaptive sampling variance.",
     ),
     // lights
     kw(
@@ -909,7 +909,11 @@ pub const DOCS: &[Doc] = &[
         "area_light <A1>, <A2>, N1, N2",
         "A rectangle of N1×N2 lights for soft shadows.",
     ),
-    kw("jitter", "jitter", "Jitters area light samples."),
+    kw(
+        "jitter",
+        "jitter | jitter J",
+        "Jitters area light samples; in media, how far samples move at random (default 0).",
+    ),
     kw(
         "adaptive",
         "adaptive A",
@@ -930,12 +934,12 @@ pub const DOCS: &[Doc] = &[
     kw(
         "media_interaction",
         "media_interaction on|off",
-        "Whether the light interacts with media.",
+        "Whether the light lights scattering media (default on).",
     ),
     kw(
         "media_attenuation",
         "media_attenuation on|off",
-        "Whether media dims the light.",
+        "Whether atmospheric media and fog dim the light on its way (default off; media in objects always do).",
     ),
     later(
         "global_lights",
@@ -981,7 +985,7 @@ pub const DOCS: &[Doc] = &[
     kw(
         "samples",
         "samples N",
-        "path_tracing: samples per pixel (default 64).",
+        "path_tracing: samples per pixel (default 64); in media, `samples MIN[, MAX]` per interval (default 10).",
     ),
     kw(
         "max_depth",
@@ -1091,7 +1095,66 @@ pub const DOCS: &[Doc] = &[
     ),
     later("radiosity", "radiosity { … }", "Indirect diffuse lighting."),
     later("photons", "photons { … }", "Photon mapping for caustics."),
-    later("media", "media { … }", "Participating media (smoke, haze)."),
+    kw(
+        "media",
+        "media { absorption C emission C scattering { … } density { … } method intervals samples … }",
+        "Participating media (smoke, haze, glow): in an interior (the object must be hollow) or at top level (atmospheric).",
+    ),
+    kw(
+        "absorption",
+        "absorption COLOUR",
+        "Media: how much light it absorbs per unit distance (default black).",
+    ),
+    kw(
+        "scattering",
+        "scattering { TYPE, COLOUR [eccentricity E] [extinction X] }",
+        "Media: light scattered towards the viewer; 1 isotropic, 2 Mie haze, 3 Mie murky, 4 Rayleigh, 5 Henyey-Greenstein.",
+    ),
+    kw(
+        "eccentricity",
+        "eccentricity E",
+        "Henyey-Greenstein scattering (type 5): -1 < E < 1, positive scatters forwards (default 0).",
+    ),
+    kw(
+        "extinction",
+        "extinction X",
+        "Scattering: how much it also dims what lies behind (default 1).",
+    ),
+    kw(
+        "density",
+        "density { PATTERN density_map { … } | COLOUR }",
+        "Media: scales its coefficients at each point; several multiply (default 1).",
+    ),
+    kw(
+        "density_map",
+        "density_map { [V COLOUR] … }",
+        "A density's colour map (the same as color_map).",
+    ),
+    kw(
+        "method",
+        "method 1|2|3",
+        "Media sampling: 1 random, 2 stratified with jitter, 3 adaptive (default).",
+    ),
+    kw(
+        "intervals",
+        "intervals N",
+        "Media: pieces the ray's stretch is cut into (default 1).",
+    ),
+    kw(
+        "ratio",
+        "ratio R",
+        "Media: share of intervals for parts lit by spotlights and cylinder lights (default 0.9).",
+    ),
+    kw(
+        "aa_threshold",
+        "aa_threshold T",
+        "Media method 3: subdivide where samples differ by more (default 0.1).",
+    ),
+    kw(
+        "aa_level",
+        "aa_level L",
+        "Media method 3: most subdivisions (default 3).",
+    ),
     // splines
     kw(
         "spline",

@@ -49,6 +49,12 @@ pub fn apply_fog(atmosphere: &Atmosphere, ray: &Ray, depth: f64, colour: DVec3) 
     through + added
 }
 
+/// What passes through `fog` along the `dist` from `origin` along unit `dir`
+/// (for light on its way to a point: the fog's own colour is not added).
+pub fn fog_pass(fog: &Fog, origin: DVec3, dir: DVec3, dist: f64) -> DVec3 {
+    blend(fog, transmittance(fog, origin, dir, dist)).0
+}
+
 /// How much of what lies `dist` away along unit `dir` from `origin` shows through
 /// `fog`: `exp(-D / distance)`, D the distance weighted by the fog's density.
 pub fn transmittance(fog: &Fog, origin: DVec3, dir: DVec3, dist: f64) -> f64 {

@@ -92,6 +92,12 @@ pub fn incident(
             _ => shadow(world, p, geo_n, dir, dist, index, ctx),
         };
         colour *= seen;
+        // Media in objects always dim light passing through them; atmospheric
+        // media and fog only with `media_attenuation on` (as in POV-Ray 3.7).
+        let atmospheric = light.media_attenuation && world.tracks_interiors;
+        if (atmospheric || world.object_media) && colour != DVec3::ZERO {
+            colour *= super::media::shadow_attenuation(world, p, dir, dist, atmospheric, ctx);
+        }
         if colour == DVec3::ZERO {
             return None;
         }

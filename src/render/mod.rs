@@ -12,6 +12,7 @@ mod camera;
 mod film;
 mod focal_blur;
 mod lights;
+mod media;
 mod passes;
 pub mod path;
 pub(crate) mod pigment;
@@ -349,6 +350,11 @@ impl Renderer<'_> {
         let mut ctx = TraceCtx {
             sampler,
             stats: &mut st.rays,
+            media: if world.tracks_interiors {
+                media::MediaPath::at_camera(world)
+            } else {
+                media::MediaPath::default()
+            },
         };
         trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0, &mut ctx)
     }

@@ -3,6 +3,7 @@
 
 use super::atmosphere;
 use super::lights;
+use super::media::{self, MediaPath};
 use super::pigment;
 use super::sampler::Sampler;
 use super::stats::RayStats;
@@ -17,6 +18,8 @@ pub struct TraceCtx<'a> {
     pub sampler: &'a mut Sampler,
     /// Rays traced so far.
     pub stats: &'a mut RayStats,
+    /// The objects the ray being traced is inside (for media and fog).
+    pub media: MediaPath,
 }
 
 /// POV-Ray's "metallic" weight at angle of incidence `cos_incidence` (cosine against
@@ -108,7 +111,20 @@ pub fn trace(
             (shade(world, &surface, ray, level, weight, ctx), hit.t)
         }
     };
-    atmosphere::apply_fog(&world.atmosphere, ray, depth, colour)
+    if !world.tracks_interiors {
+        return atmosphere::apply_fog(&world.atmosphere, ray, depth, colour);
+    }
+    // Media and fog act only where every object the ray is in is hollow.
+    let colour = if world.has_media {
+        media::along(world, ray, depth, colour, ctx)
+    } else {
+        colour
+    };
+    if ctx.media.hollow() {
+        atmosphere::apply_fog(&world.atmosphere, ray, depth, colour)
+    } else {
+        colour
+    }
 }
 
 /// The layers of `tex`, top first.
@@ -306,7 +322,20 @@ fn transmitted(
     };
     let (next, eps) = Ray::secondary(s.p, s.geo_normal, dir);
     ctx.stats.transmitted += 1;
+    // A ray passing through the surface enters or leaves the object.
+    let outer = (world.tracks_interiors && kind == RayKind::Camera).then(|| {
+        let outer = ctx.media.clone();
+        if entering {
+            ctx.media.enter(s.prim, s.interior, s.flags.hollow);
+        } else {
+            ctx.media.leave(s.prim, s.interior);
+        }
+        outer
+    });
     let colour = trace(world, &next, eps, kind, level + 1, weight, ctx);
+    if let Some(outer) = outer {
+        ctx.media = outer;
+    }
     // Fading applies to light that crossed the inside: rays leaving it now.
     let inside = (kind == RayKind::Camera) == entering;
     match s.interior {

@@ -10,6 +10,9 @@ pub struct Atmosphere {
     pub sky_sphere: Option<SkySphere>,
     /// `fog { … }` blocks, applied to every ray in file order.
     pub fogs: Vec<Fog>,
+    /// Top-level `media { … }` blocks: atmospheric media filling all space
+    /// (outside non-hollow objects).
+    pub media: Vec<super::Media>,
 }
 
 /// `sky_sphere { pigment { … } … [transforms] }`: pigments evaluated at the unit

@@ -25,6 +25,10 @@ pub struct Light {
     pub fade_distance: f64,
     /// `fade_power` (0 = no fading).
     pub fade_power: f64,
+    /// `media_interaction` (default on): whether scattering media is lit by it.
+    pub media_interaction: bool,
+    /// `media_attenuation` (default off): whether media on the way dims its light.
+    pub media_attenuation: bool,
     /// `area_light …`: soft shadows from a grid of lights.
     pub area: Option<AreaLight>,
     /// `looks_like { OBJECT }`: the object, already placed at the light; the evaluator
@@ -46,6 +50,8 @@ impl Default for Light {
             shadowless: false,
             fade_distance: 0.0,
             fade_power: 0.0,
+            media_interaction: true,
+            media_attenuation: false,
             area: None,
             looks_like: None,
             span: Span::default(),

@@ -458,7 +458,7 @@ impl Default for Finish {
 
 /// `interior { ior fade_distance fade_power }`: what is inside a surface, for rays
 /// that pass through it (filter/transmit).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Interior {
     /// `ior`: index of refraction (1 = no bending).
     pub ior: f64,
@@ -469,6 +469,8 @@ pub struct Interior {
     pub fade_power: f64,
     /// `fade_color`: the colour light fades towards (default black).
     pub fade_colour: DVec3,
+    /// `media { … }` blocks inside the object (their effects add up).
+    pub media: Vec<super::Media>,
 }
 
 impl Default for Interior {
@@ -479,6 +481,7 @@ impl Default for Interior {
             fade_distance: 0.0,
             fade_power: 0.0,
             fade_colour: DVec3::ZERO,
+            media: Vec::new(),
         }
     }
 }

@@ -11,6 +11,7 @@ mod blob;
 mod camera;
 mod light;
 mod material;
+mod media;
 mod object;
 mod path;
 mod transform;
@@ -25,6 +26,7 @@ pub use material::{
     PatternMods, PatternedTexture, Pigment, Reflection, Texture, TextureEntries, TextureMapEntries,
     Wave,
 };
+pub use media::{Media, Scattering, ScatteringKind};
 pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape, TextData};
 pub use path::{PathTracing, PixelFilter};
 pub use transform::Transform;
