@@ -46,6 +46,7 @@ pub(crate) const BLOCKS: &[&str] = &[
     "path_tracing",
     "function",
     "contained_by",
+    "warp",
 ];
 
 /// POV-Ray blocks that a later release implements.
@@ -54,7 +55,6 @@ const LATER_BLOCKS: &[&str] = &[
     "sphere_sweep",
     "bicubic_patch",
     "irid",
-    "warp",
     "normal_map",
     "media",
     "photons",
@@ -138,6 +138,7 @@ impl Evaluator<'_> {
             "pigment" => Value::Pigment(std::sync::Arc::new(self.pigment(&mut c)?)),
             "finish" => Value::Finish(std::sync::Arc::new(self.finish(&mut c)?)),
             "reflection" => Value::Reflection(self.reflection(&mut c)?),
+            "warp" => Value::Warp(std::sync::Arc::new(self.warp_block(&mut c)?)),
             "normal" => Value::Normal(std::sync::Arc::new(self.normal(&mut c)?)),
             "interior" => Value::Interior(std::sync::Arc::new(self.interior(&mut c)?)),
             "color_map" | "colour_map" => {

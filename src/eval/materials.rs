@@ -83,8 +83,6 @@ pub(crate) const IMAGE_MAP_ITEMS: &[&str] = &[
     "transmit",
     "uv_mapping",
 ];
-/// Pattern keywords of POV-Ray that a later release implements.
-const LATER_PATTERNS: &[&str] = &["warp"];
 const LATER_FINISH: &[&str] = &["irid", "reflection_exponent", "fresnel"];
 
 /// A texture's pattern being read: its keyword, modifiers, textures and the
@@ -151,6 +149,18 @@ fn extra_texture(p: &TexturePatternSpec, span: Span) -> Fail {
         "remove this texture (`{}` takes {count})",
         p.keyword
     ))
+    .into()
+}
+
+/// `warp { }` written before any pattern in a `what` block.
+fn warp_without_pattern(span: Span, what: &str) -> Fail {
+    Diagnostic::error(
+        codes::WARP_WITHOUT_PATTERN,
+        span,
+        format!("a warp needs a pattern before it in this {what}"),
+    )
+    .with_label("nothing to warp yet")
+    .with_help("write the pattern first, e.g. `bozo warp { turbulence 0.5 }`")
     .into()
 }
 
@@ -325,15 +335,13 @@ impl Evaluator<'_> {
                     }
                     Err(Fail::silent())
                 }
-                Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_PATTERNS.contains(&kw) => {
-                    Err(Diagnostic::error(
-                        codes::UNSUPPORTED,
-                        span,
-                        format!("`{kw}` in textures is not implemented in rts yet"),
-                    )
-                    .with_help("see docs/language.md for the patterns this release supports")
-                    .into())
-                }
+                Tok::Block("warp", Value::Warp(w), span) => match &mut pat {
+                    Some(p) => {
+                        super::warps::push_warp(&mut p.spec, &w, Some(&p.transform));
+                        Ok(())
+                    }
+                    None => Err(warp_without_pattern(span, "texture")),
+                },
                 other => Err(self.unexpected(c, &other, &texture_items())),
             };
             if let Err(f) = r {
@@ -720,7 +728,7 @@ impl Evaluator<'_> {
                     pattern_given = true;
                     if let Pattern::Mapped(m) = &pig.pattern {
                         spec.kind = Some(m.kind.clone());
-                        spec.mods = m.mods;
+                        spec.mods = m.mods.clone();
                         spec.wave = Some(m.mods.wave);
                         match &m.map {
                             PatternMap::List(l) => spec.list = l.clone(),
@@ -804,14 +812,14 @@ impl Evaluator<'_> {
                 }
                 // A block that already reported itself (`warp { }`) says nothing more.
                 Tok::Block(_, Value::Poison, _) => Err(Fail::silent()),
-                Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_PATTERNS.contains(&kw) => {
-                    Err(Diagnostic::error(
-                        codes::UNSUPPORTED,
-                        span,
-                        format!("`{kw}` in pigments is not implemented in rts yet"),
-                    )
-                    .with_help("see docs/language.md for the patterns this release supports")
-                    .into())
+                Tok::Block("warp", Value::Warp(w), span) => {
+                    if spec.kind.is_none() {
+                        Err(warp_without_pattern(span, "pigment"))
+                    } else {
+                        modified = true;
+                        super::warps::push_warp(&mut spec, &w, pig.transform.as_deref());
+                        Ok(())
+                    }
                 }
                 Tok::Val(Value::Poison, _) => Err(Fail::silent()),
                 Tok::Val(v, span) if pattern_given => Err(Diagnostic::error(
@@ -895,7 +903,7 @@ impl Evaluator<'_> {
         let mut transform = n.as_ref().and_then(|x| x.transform.clone());
         if let Some(x) = &n {
             spec.kind = Some(x.kind.clone());
-            spec.mods = x.mods;
+            spec.mods = x.mods.clone();
             spec.wave = Some(x.mods.wave);
         }
         while let Some(tok) = c.next() {
@@ -921,6 +929,14 @@ impl Evaluator<'_> {
                     Ok(())
                 }
                 Tok::Block(_, Value::ColourMap(_) | Value::PigmentMap(_), _) => Ok(()),
+                Tok::Block("warp", Value::Warp(w), span) => {
+                    if spec.kind.is_none() {
+                        Err(warp_without_pattern(span, "normal"))
+                    } else {
+                        super::warps::push_warp(&mut spec, &w, transform.as_deref());
+                        Ok(())
+                    }
+                }
                 Tok::Val(Value::Poison, _) => Err(Fail::silent()),
                 other => Err(self.unexpected(c, &other, &normal_items())),
             };

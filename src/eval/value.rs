@@ -171,6 +171,8 @@ pub enum Value {
     Spline(Rc<super::spline::Spline>),
     /// A `function { }`, called as `F(x, y, z)`.
     Function(Arc<super::function::Function>),
+    /// A `warp { … }` (only meaningful inside a pattern).
+    Warp(Arc<crate::scene::Warp>),
     /// The value of something whose evaluation failed (already reported); using it
     /// fails silently so one error does not cascade.
     Poison,
@@ -201,6 +203,7 @@ impl Value {
             Value::Material(_) => "a material",
             Value::Transform(_) => "a transform",
             Value::Reflection(_) => "a reflection block",
+            Value::Warp(_) => "a warp",
             Value::Normal(_) => "a normal",
             Value::Interior(_) => "an interior",
             Value::ColourMap(_) => "a colour map",

@@ -1,10 +1,13 @@
 //! Pigment and normal evaluation: patterns, colour and pigment maps, image maps,
 //! bump perturbation, and the textures a patterned texture chooses.
 
+mod fractals;
 mod image_map;
 pub mod noise;
 pub mod patterns;
+mod shapes;
 pub mod texture_map;
+pub mod warps;
 
 pub use texture_map::{for_each_plain, plain_at};
 

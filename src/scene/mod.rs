@@ -14,6 +14,7 @@ mod material;
 mod object;
 mod path;
 mod transform;
+mod warp;
 
 pub use animation::{Timeline, DEFAULT_FPS};
 pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, SkySphere};
@@ -21,13 +22,14 @@ pub use blob::{BlobComponent, BlobData, BlobKind};
 pub use camera::{Camera, CameraKind};
 pub use light::{AreaLight, Beam, Light, LightKind};
 pub use material::{
-    compose, Colour, Finish, ImageMap, Interior, Mapped, Normal, Pattern, PatternKind, PatternMap,
+    compose, Colour, Finish, ImageMap, Irid, Interior, Mapped, Normal, Pattern, PatternKind, PatternMap,
     PatternMods, PatternedTexture, Pigment, Reflection, Texture, TextureEntries, TextureMapEntries,
     Wave,
 };
 pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape, TextData};
 pub use path::{PathTracing, PixelFilter};
 pub use transform::Transform;
+pub use warp::{Fractal, FractalKind, MappingWarp, Warp, WarpStep};
 
 use glam::DVec3;
 
