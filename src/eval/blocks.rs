@@ -47,6 +47,7 @@ pub(crate) const BLOCKS: &[&str] = &[
     "function",
     "contained_by",
     "warp",
+    "irid",
 ];
 
 /// POV-Ray blocks that a later release implements.
@@ -54,7 +55,6 @@ const LATER_BLOCKS: &[&str] = &[
     "julia_fractal",
     "sphere_sweep",
     "bicubic_patch",
-    "irid",
     "normal_map",
     "media",
     "photons",
@@ -139,6 +139,7 @@ impl Evaluator<'_> {
             "finish" => Value::Finish(std::sync::Arc::new(self.finish(&mut c)?)),
             "reflection" => Value::Reflection(self.reflection(&mut c)?),
             "warp" => Value::Warp(std::sync::Arc::new(self.warp_block(&mut c)?)),
+            "irid" => Value::Irid(self.irid_block(&mut c)?),
             "normal" => Value::Normal(std::sync::Arc::new(self.normal(&mut c)?)),
             "interior" => Value::Interior(std::sync::Arc::new(self.interior(&mut c)?)),
             "color_map" | "colour_map" => {

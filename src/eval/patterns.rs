@@ -11,12 +11,37 @@ use std::sync::Arc;
 
 /// Pattern keywords this release evaluates.
 pub(crate) const PATTERNS: &[&str] = &[
-    "checker", "hexagon", "brick", "gradient", "radial", "onion", "leopard", "spotted", "bozo",
-    "marble", "wood", "granite", "agate", "wrinkles", "ripples", "waves", "bumps", "dents",
-    "crackle", "function",
+    "checker",
+    "hexagon",
+    "brick",
+    "gradient",
+    "radial",
+    "onion",
+    "leopard",
+    "spotted",
+    "bozo",
+    "marble",
+    "wood",
+    "granite",
+    "agate",
+    "wrinkles",
+    "ripples",
+    "waves",
+    "bumps",
+    "dents",
+    "crackle",
+    "function",
     // Geometric, quilted, spiral and fractal patterns.
-    "planar", "spherical", "cylindrical", "boxed", "quilted", "spiral1", "spiral2", "mandel",
-    "julia", "magnet",
+    "planar",
+    "spherical",
+    "cylindrical",
+    "boxed",
+    "quilted",
+    "spiral1",
+    "spiral2",
+    "mandel",
+    "julia",
+    "magnet",
 ];
 
 /// Pattern modifiers.
@@ -322,8 +347,9 @@ impl Evaluator<'_> {
                     }
                 }
             }
-            "control0" | "control1" | "exponent" | "exterior" | "interior"
-            | "noise_generator" => self.shape_modifier(kw, c, spec)?,
+            "control0" | "control1" | "exponent" | "exterior" | "interior" | "noise_generator" => {
+                self.shape_modifier(kw, c, spec)?
+            }
             "brick_size" | "mortar" => {
                 let (v, s) = c.value(&format!("a value after `{kw}`"))?;
                 match &mut spec.kind {

@@ -173,6 +173,8 @@ pub enum Value {
     Function(Arc<super::function::Function>),
     /// A `warp { … }` (only meaningful inside a pattern).
     Warp(Arc<crate::scene::Warp>),
+    /// An `irid { … }` (only meaningful inside a finish).
+    Irid(crate::scene::Irid),
     /// The value of something whose evaluation failed (already reported); using it
     /// fails silently so one error does not cascade.
     Poison,
@@ -204,6 +206,7 @@ impl Value {
             Value::Transform(_) => "a transform",
             Value::Reflection(_) => "a reflection block",
             Value::Warp(_) => "a warp",
+            Value::Irid(_) => "an irid block",
             Value::Normal(_) => "a normal",
             Value::Interior(_) => "an interior",
             Value::ColourMap(_) => "a colour map",

@@ -140,9 +140,13 @@ impl Evaluator<'_> {
             };
             match (&mut w, kw) {
                 (Warp::Turbulence { octaves, .. }, "octaves") => {
-                    *octaves = self.take_float(c, "the number of octaves")?.clamp(1.0, 10.0) as u32
+                    *octaves = self
+                        .take_float(c, "the number of octaves")?
+                        .clamp(1.0, 10.0) as u32
                 }
-                (Warp::Turbulence { omega, .. }, "omega") => *omega = self.take_float(c, "omega")?,
+                (Warp::Turbulence { omega, .. }, "omega") => {
+                    *omega = self.take_float(c, "omega")?
+                }
                 (Warp::Turbulence { lambda, .. }, "lambda") => {
                     *lambda = self.take_float(c, "lambda")?
                 }
@@ -331,7 +335,9 @@ impl Evaluator<'_> {
                     return Err(Diagnostic::error(
                         codes::OUT_OF_RANGE,
                         s,
-                        format!("a fractal's exponent must be a whole number from 2 to 33, found {x}"),
+                        format!(
+                            "a fractal's exponent must be a whole number from 2 to 33, found {x}"
+                        ),
                     )
                     .into());
                 }
@@ -345,10 +351,36 @@ impl Evaluator<'_> {
                     span,
                     format!("`{kw}` applies to the `{owner}` pattern only"),
                 )
-                .with_help(format!("write `{}` before it", owner.split('`').next().unwrap_or(owner)))
+                .with_help(format!(
+                    "write `{}` before it",
+                    owner.split('`').next().unwrap_or(owner)
+                ))
                 .into())
             }
         }
         Ok(())
+    }
+}
+
+impl Evaluator<'_> {
+    /// `irid { AMOUNT [thickness T] [turbulence U] }` in a finish.
+    pub(crate) fn irid_block(&mut self, c: &mut Cursor) -> R<crate::scene::Irid> {
+        let mut irid = crate::scene::Irid {
+            amount: self.take_float(c, "the iridescence amount")?,
+            ..Default::default()
+        };
+        while let Some(tok) = c.next() {
+            match tok {
+                Tok::Kw("thickness", _) => {
+                    irid.thickness = self.take_float(c, "the film thickness")?
+                }
+                Tok::Kw("turbulence", _) => {
+                    irid.turbulence = self.take_float(c, "the thickness turbulence")?
+                }
+                Tok::Comma(_) => {}
+                other => return Err(self.unexpected(c, &other, &["thickness", "turbulence"])),
+            }
+        }
+        Ok(irid)
     }
 }

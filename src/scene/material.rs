@@ -391,6 +391,9 @@ pub struct ImageMap {
     /// Whether light may pass: a pixel has filter or transmit, or the map is
     /// `once` (clear outside the unit square). Set once the pixels are known.
     pub see_through: bool,
+    /// `turbulence` and `warp { }` of the pigment, applied to the point before
+    /// the lookup (`None`: none).
+    pub mods: Option<PatternMods>,
 }
 
 /// `normal { PATTERN [bump_size] modifiers transforms }`.
@@ -404,6 +407,9 @@ pub struct Normal {
     pub bump_size: f64,
     /// Transforms of the normal pattern.
     pub transform: Option<Arc<Transform>>,
+    /// `accuracy`: the step of the slope's differences in pattern units (`None`:
+    /// rts's own small step).
+    pub accuracy: Option<f64>,
 }
 
 /// `reflection { MIN, MAX fresnel falloff metallic }` or `reflection COLOUR`.

@@ -22,9 +22,9 @@ pub use blob::{BlobComponent, BlobData, BlobKind};
 pub use camera::{Camera, CameraKind};
 pub use light::{AreaLight, Beam, Light, LightKind};
 pub use material::{
-    compose, Colour, Finish, ImageMap, Irid, Interior, Mapped, Normal, Pattern, PatternKind, PatternMap,
-    PatternMods, PatternedTexture, Pigment, Reflection, Texture, TextureEntries, TextureMapEntries,
-    Wave,
+    compose, Colour, Finish, ImageMap, Interior, Irid, Mapped, Normal, Pattern, PatternKind,
+    PatternMap, PatternMods, PatternedTexture, Pigment, Reflection, Texture, TextureEntries,
+    TextureMapEntries, Wave,
 };
 pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape, TextData};
 pub use path::{PathTracing, PixelFilter};

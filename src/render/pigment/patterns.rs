@@ -305,6 +305,7 @@ pub fn lean_vector(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<DVec
             // Leaning *with* the summed magnitudes (the normal gains them).
             Some(-sum)
         }
+        PatternKind::Quilted { .. } => Some(-super::shapes::quilt_vector(kind, warp(p, m))),
         _ => None,
     }
 }

@@ -50,6 +50,18 @@ fn spiral_angle(x: f64, y: f64) -> f64 {
     }
 }
 
+/// The vector of a `quilted` cushion at `p`: from the cell's centre, scaled by
+/// the control cubic. POV-Ray's quilted normal leans the surface normal by it.
+pub fn quilt_vector(kind: &PatternKind, p: DVec3) -> DVec3 {
+    let PatternKind::Quilted { control0, control1 } = kind else {
+        return DVec3::ZERO;
+    };
+    let v = p - p.floor() - DVec3::splat(0.5);
+    let t = v.length();
+    let it = 1.0 - t;
+    v * (t * t * t + 3.0 * t * it * (control0 * it + control1 * t))
+}
+
 /// The raw value of one of this module's patterns at `p`.
 pub fn raw(kind: &PatternKind, p: DVec3) -> f64 {
     match kind {
@@ -57,12 +69,8 @@ pub fn raw(kind: &PatternKind, p: DVec3) -> f64 {
         PatternKind::Spherical => 1.0 - p.length().min(1.0),
         PatternKind::Cylindrical => 1.0 - (p.x * p.x + p.z * p.z).sqrt().min(1.0),
         PatternKind::Boxed => 1.0 - p.abs().max_element().min(1.0),
-        PatternKind::Quilted { control0, control1 } => {
-            let v = p - p.floor() - DVec3::splat(0.5);
-            let t = v.length();
-            let it = 1.0 - t;
-            let cubic = t * t * t + 3.0 * t * it * (control0 * it + control1 * t);
-            let w = v * cubic;
+        PatternKind::Quilted { .. } => {
+            let w = quilt_vector(kind, p);
             // Normalised so a cushion's corner reaches 1 (measured: 2/√3 times
             // the mean of the components).
             (w.x.abs() + w.y.abs() + w.z.abs()) / 3.0 * 2.0 / 3f64.sqrt()
