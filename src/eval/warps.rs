@@ -241,14 +241,6 @@ impl Evaluator<'_> {
             _ => {
                 let (v, s) = c.value("the magnet type (1 or 2)")?;
                 let t = self.to_float(&v, s)?;
-                if t != 1.0 && t != 2.0 {
-                    return Err(Diagnostic::error(
-                        codes::OUT_OF_RANGE,
-                        s,
-                        format!("the magnet type must be 1 or 2, found {t}"),
-                    )
-                    .into());
-                }
                 let julia = match c.next() {
                     Some(Tok::Kw("mandel", _)) => None,
                     Some(Tok::Kw("julia", _)) => {
@@ -268,6 +260,16 @@ impl Evaluator<'_> {
                     }
                 };
                 let n = self.take_float(c, "the number of iterations")?;
+                // Checked after the rest is read, so nothing else is reported.
+                if t != 1.0 && t != 2.0 {
+                    return Err(Diagnostic::error(
+                        codes::OUT_OF_RANGE,
+                        s,
+                        format!("the magnet type must be 1 or 2, found {t}"),
+                    )
+                    .with_help("write `magnet 1 mandel ITERATIONS` or `magnet 2 …`")
+                    .into());
+                }
                 let kind = match (t == 1.0, julia) {
                     (true, None) => FractalKind::Magnet1Mandel,
                     (true, Some(k)) => FractalKind::Magnet1Julia(k),
@@ -312,21 +314,26 @@ impl Evaluator<'_> {
         let first = if kw == "exterior" || kw == "interior" {
             let (v, s) = c.value(&format!("the {kw} type (0 to 6)"))?;
             let t = self.to_float(&v, s)?;
-            if !(0.0..=6.0).contains(&t) || t.fract() != 0.0 {
-                return Err(Diagnostic::error(
-                    codes::OUT_OF_RANGE,
-                    s,
-                    format!("the {kw} type must be a whole number from 0 to 6, found {t}"),
-                )
-                .into());
-            }
             c.comma();
-            t
+            Some((t, s))
         } else {
-            0.0
+            None
         };
         let (v, s) = c.value(&format!("a value after `{kw}`"))?;
         let x = self.to_float(&v, s)?;
+        let first = match first {
+            Some((t, ts)) if !(0.0..=6.0).contains(&t) || t.fract() != 0.0 => {
+                return Err(Diagnostic::error(
+                    codes::OUT_OF_RANGE,
+                    ts,
+                    format!("the {kw} type must be a whole number from 0 to 6, found {t}"),
+                )
+                .with_help(format!("write `{kw} TYPE, FACTOR` with TYPE 0 to 6"))
+                .into());
+            }
+            Some((t, _)) => t,
+            None => 0.0,
+        };
         match (&mut spec.kind, kw) {
             (Some(K::Quilted { control0, .. }), "control0") => *control0 = x,
             (Some(K::Quilted { control1, .. }), "control1") => *control1 = x,
