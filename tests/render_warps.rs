@@ -60,7 +60,11 @@ fn repeat_warp_is_periodic_with_its_width() {
     for row in &g {
         for i in 0..8 {
             let want = x_of(i).rem_euclid(2.0) / 4.0;
-            assert!((row[i] - want).abs() < 2e-4, "pixel {i}: {} vs {want}", row[i]);
+            assert!(
+                (row[i] - want).abs() < 2e-4,
+                "pixel {i}: {} vs {want}",
+                row[i]
+            );
             if i + 4 < 8 {
                 assert_eq!(row[i], row[i + 4]);
             }
@@ -78,8 +82,16 @@ fn repeat_flip_mirrors_odd_copies() {
         let x = x_of(i);
         let block = (x / 2.0).floor();
         let r = x - 2.0 * block;
-        let want = if block.rem_euclid(2.0) == 1.0 { 2.0 - r } else { r } / 4.0;
-        assert!((g[3][i] - want).abs() < 2e-4, "pixel {i}: {} vs {want}", g[3][i]);
+        let want = if block.rem_euclid(2.0) == 1.0 {
+            2.0 - r
+        } else {
+            r
+        } / 4.0;
+        assert!(
+            (g[3][i] - want).abs() < 2e-4,
+            "pixel {i}: {} vs {want}",
+            g[3][i]
+        );
     }
 }
 
@@ -141,6 +153,10 @@ fn warp_after_a_transform_acts_in_the_transformed_space() {
     for i in 0..4 {
         assert_eq!(before[2][i], before[2][i + 4]);
         let want = (x_of(i) / 4.0).rem_euclid(0.5);
-        assert!((before[2][i] - want).abs() < 2e-4, "{} vs {want}", before[2][i]);
+        assert!(
+            (before[2][i] - want).abs() < 2e-4,
+            "{} vs {want}",
+            before[2][i]
+        );
     }
 }

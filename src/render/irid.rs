@@ -51,10 +51,27 @@ mod tests {
             },
             ..Finish::default()
         };
-        let c = tint(&f, DVec3::ONE, DVec3::NEG_Z, DVec3::NEG_Z, DVec3::Z, DVec3::ZERO);
+        let c = tint(
+            &f,
+            DVec3::ONE,
+            DVec3::NEG_Z,
+            DVec3::NEG_Z,
+            DVec3::Z,
+            DVec3::ZERO,
+        );
         // Half of red's period: red is gone.
         assert!(c.x.abs() < 1e-9, "{c}");
         let plain = Finish::default();
-        assert_eq!(tint(&plain, DVec3::ONE, DVec3::Z, DVec3::Z, DVec3::Z, DVec3::ZERO), DVec3::ONE);
+        assert_eq!(
+            tint(
+                &plain,
+                DVec3::ONE,
+                DVec3::Z,
+                DVec3::Z,
+                DVec3::Z,
+                DVec3::ZERO
+            ),
+            DVec3::ONE
+        );
     }
 }
