@@ -78,7 +78,7 @@ fn repeat_flip_mirrors_odd_copies() {
         "repeat_flip",
         &format!("gradient x {GREY} scale 4 warp {{ repeat x*2 flip x }}"),
     );
-    for i in 0..8 {
+    for (i, &got) in g[3].iter().enumerate() {
         let x = x_of(i);
         let block = (x / 2.0).floor();
         let r = x - 2.0 * block;
@@ -87,11 +87,7 @@ fn repeat_flip_mirrors_odd_copies() {
         } else {
             r
         } / 4.0;
-        assert!(
-            (g[3][i] - want).abs() < 2e-4,
-            "pixel {i}: {} vs {want}",
-            g[3][i]
-        );
+        assert!((got - want).abs() < 2e-4, "pixel {i}: {got} vs {want}");
     }
 }
 
