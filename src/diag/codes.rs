@@ -99,6 +99,8 @@ pub const DEPRECATED: &str = "rts::lint::deprecated";
 pub const NO_GAMMA: &str = "rts::lint::assumed_gamma_missing";
 /// A scene with no light sources (warning).
 pub const NO_LIGHTS: &str = "rts::lint::no_lights";
+/// A `warp { }` written before any pattern.
+pub const WARP_WITHOUT_PATTERN: &str = "rts::eval::warp_without_pattern";
 /// A patterned texture layered over or under another texture.
 pub const PATTERNED_LAYER: &str = "rts::eval::patterned_layer";
 /// Map entries whose values go down (warning).

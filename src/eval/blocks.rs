@@ -50,6 +50,8 @@ pub(crate) const BLOCKS: &[&str] = &[
     "path_tracing",
     "function",
     "contained_by",
+    "warp",
+    "irid",
 ];
 
 /// POV-Ray blocks that a later release implements.
@@ -57,8 +59,6 @@ const LATER_BLOCKS: &[&str] = &[
     "julia_fractal",
     "sphere_sweep",
     "bicubic_patch",
-    "irid",
-    "warp",
     "normal_map",
     "photons",
     "radiosity",
@@ -141,6 +141,8 @@ impl Evaluator<'_> {
             "pigment" => Value::Pigment(std::sync::Arc::new(self.pigment(&mut c)?)),
             "finish" => Value::Finish(std::sync::Arc::new(self.finish(&mut c)?)),
             "reflection" => Value::Reflection(self.reflection(&mut c)?),
+            "warp" => Value::Warp(std::sync::Arc::new(self.warp_block(&mut c)?)),
+            "irid" => Value::Irid(self.irid_block(&mut c)?),
             "normal" => Value::Normal(std::sync::Arc::new(self.normal(&mut c)?)),
             "interior" => Value::Interior(std::sync::Arc::new(self.interior(&mut c)?)),
             "color_map" | "colour_map" | "density_map" => {

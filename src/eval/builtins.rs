@@ -96,6 +96,7 @@ pub const BUILTIN_NAMES: &[&str] = &[
     "bitwise_xor",
     "trace",
     "strcmp",
+    "vturbulence",
 ];
 
 /// How many of [`BUILTIN_NAMES`] are constants.
@@ -321,6 +322,15 @@ impl Evaluator<'_> {
                     3
                 };
                 Ok(args[pick].0.clone())
+            }
+            "vturbulence" => {
+                arity(4, 4)?;
+                let (lambda, omega, octaves) = (f(0)?, f(1)?, f(2)?);
+                let p = self.to_vec3(&args[3].0, args[3].1)?;
+                let octaves = octaves.clamp(1.0, 10.0) as u32;
+                Ok(Value::Vector(Vector::v3(
+                    crate::render::pigment::noise::turbulence_vec(p, octaves, omega, lambda),
+                )))
             }
             "vlength" => {
                 arity(1, 1)?;
@@ -594,6 +604,7 @@ pub fn signature(name: &str) -> String {
         "defined" => "defined(NAME)".into(),
         "trace" => "trace(OBJECT, START, DIRECTION [, NORMAL])".into(),
         "strcmp" => "strcmp(S1, S2)".into(),
+        "vturbulence" => "vturbulence(LAMBDA, OMEGA, OCTAVES, <P>)".into(),
         "bitwise_and" | "bitwise_or" | "bitwise_xor" => format!("{name}(A, B, …)"),
         _ => format!("{name}(A)"),
     }

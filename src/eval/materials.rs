@@ -29,7 +29,7 @@ pub(crate) const TEXTURE_ITEMS: &[&str] = &[
 /// What a `texture { }` accepts: its own items, and the patterns and modifiers of
 /// a patterned texture.
 pub(crate) fn texture_items() -> Vec<&'static str> {
-    [TEXTURE_ITEMS, PATTERNS, MODIFIERS].concat()
+    [TEXTURE_ITEMS, PATTERNS, MODIFIERS, &["warp"]].concat()
 }
 /// What a `pigment { }` accepts (for "did you mean" and help lists).
 pub(crate) fn pigment_items() -> Vec<&'static str> {
@@ -40,6 +40,7 @@ pub(crate) fn pigment_items() -> Vec<&'static str> {
         "colour_map",
         "pigment_map",
         "image_map",
+        "warp",
     ];
     [&head[..], PATTERNS, MODIFIERS, TRANSFORMS].concat()
 }
@@ -56,11 +57,18 @@ pub(crate) const FINISH_ITEMS: &[&str] = &[
     "emission",
     "conserve_energy",
     "crand",
+    "irid",
 ];
 pub(crate) const REFLECTION_ITEMS: &[&str] = &["fresnel", "falloff", "metallic"];
 /// What a `normal { }` accepts.
 pub(crate) fn normal_items() -> Vec<&'static str> {
-    [PATTERNS, &["bump_size"], MODIFIERS, TRANSFORMS].concat()
+    [
+        PATTERNS,
+        &["bump_size", "accuracy", "warp"],
+        MODIFIERS,
+        TRANSFORMS,
+    ]
+    .concat()
 }
 pub(crate) const INTERIOR_ITEMS: &[&str] = &[
     "ior",
@@ -84,9 +92,7 @@ pub(crate) const IMAGE_MAP_ITEMS: &[&str] = &[
     "transmit",
     "uv_mapping",
 ];
-/// Pattern keywords of POV-Ray that a later release implements.
-const LATER_PATTERNS: &[&str] = &["warp"];
-const LATER_FINISH: &[&str] = &["irid", "reflection_exponent", "fresnel"];
+const LATER_FINISH: &[&str] = &["reflection_exponent", "fresnel"];
 
 /// A texture's pattern being read: its keyword, modifiers, textures and the
 /// transforms written in its block (applied to the whole texture at the end).
@@ -152,6 +158,18 @@ fn extra_texture(p: &TexturePatternSpec, span: Span) -> Fail {
         "remove this texture (`{}` takes {count})",
         p.keyword
     ))
+    .into()
+}
+
+/// `warp { }` written before any pattern in a `what` block.
+fn warp_without_pattern(span: Span, what: &str) -> Fail {
+    Diagnostic::error(
+        codes::WARP_WITHOUT_PATTERN,
+        span,
+        format!("a warp needs a pattern before it in this {what}"),
+    )
+    .with_label("nothing to warp yet")
+    .with_help("write the pattern first, e.g. `bozo warp { turbulence 0.5 }`")
     .into()
 }
 
@@ -326,15 +344,13 @@ impl Evaluator<'_> {
                     }
                     Err(Fail::silent())
                 }
-                Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_PATTERNS.contains(&kw) => {
-                    Err(Diagnostic::error(
-                        codes::UNSUPPORTED,
-                        span,
-                        format!("`{kw}` in textures is not implemented in rts yet"),
-                    )
-                    .with_help("see docs/language.md for the patterns this release supports")
-                    .into())
-                }
+                Tok::Block("warp", Value::Warp(w), span) => match &mut pat {
+                    Some(p) => {
+                        super::warps::push_warp(&mut p.spec, &w, Some(&p.transform));
+                        Ok(())
+                    }
+                    None => Err(warp_without_pattern(span, "texture")),
+                },
                 other => Err(self.unexpected(c, &other, &texture_items())),
             };
             if let Err(f) = r {
@@ -729,11 +745,16 @@ impl Evaluator<'_> {
                     pattern_given = true;
                     if let Pattern::Mapped(m) = &pig.pattern {
                         spec.kind = Some(m.kind.clone());
-                        spec.mods = m.mods;
+                        spec.mods = m.mods.clone();
                         spec.wave = Some(m.mods.wave);
                         match &m.map {
                             PatternMap::List(l) => spec.list = l.clone(),
                             other => spec.map = Some(other.clone()),
+                        }
+                    }
+                    if let Pattern::Image(im) = &pig.pattern {
+                        if let Some(m) = &im.mods {
+                            spec.mods = m.clone();
                         }
                     }
                     Ok(())
@@ -813,14 +834,14 @@ impl Evaluator<'_> {
                 }
                 // A block that already reported itself (`warp { }`) says nothing more.
                 Tok::Block(_, Value::Poison, _) => Err(Fail::silent()),
-                Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_PATTERNS.contains(&kw) => {
-                    Err(Diagnostic::error(
-                        codes::UNSUPPORTED,
-                        span,
-                        format!("`{kw}` in pigments is not implemented in rts yet"),
-                    )
-                    .with_help("see docs/language.md for the patterns this release supports")
-                    .into())
+                Tok::Block("warp", Value::Warp(w), span) => {
+                    if spec.kind.is_none() && !matches!(pig.pattern, Pattern::Image(_)) {
+                        Err(warp_without_pattern(span, "pigment"))
+                    } else {
+                        modified = true;
+                        super::warps::push_warp(&mut spec, &w, pig.transform.as_deref());
+                        Ok(())
+                    }
                 }
                 Tok::Val(Value::Poison, _) => Err(Fail::silent()),
                 Tok::Val(v, span) if pattern_given => Err(Diagnostic::error(
@@ -855,7 +876,15 @@ impl Evaluator<'_> {
             }
         }
         if modified {
-            if let Some(kind) = spec.kind.clone() {
+            if let (None, Pattern::Image(im)) = (&spec.kind, &pig.pattern) {
+                // Turbulence and warps of an image map move the point it looks up.
+                let mods = spec.final_mods();
+                if mods.warps.is_some() || mods.turbulence != glam::DVec3::ZERO {
+                    let mut im = (**im).clone();
+                    im.mods = Some(mods);
+                    pig.pattern = Pattern::Image(Arc::new(im));
+                }
+            } else if let Some(kind) = spec.kind.clone() {
                 pig.pattern = self.build_pattern(kind, &mut spec);
             } else if let Some(map) = spec.map.take() {
                 // A map with no pattern: POV-Ray's default pattern is `bozo`... but a
@@ -902,9 +931,10 @@ impl Evaluator<'_> {
         let mut spec = self.new_spec();
         let mut bump = n.as_ref().map_or(0.5, |x| x.bump_size);
         let mut transform = n.as_ref().and_then(|x| x.transform.clone());
+        let mut accuracy = n.as_ref().and_then(|x| x.accuracy);
         if let Some(x) = &n {
             spec.kind = Some(x.kind.clone());
-            spec.mods = x.mods;
+            spec.mods = x.mods.clone();
             spec.wave = Some(x.mods.wave);
         }
         while let Some(tok) = c.next() {
@@ -912,6 +942,10 @@ impl Evaluator<'_> {
             let r: R<()> = match tok {
                 Tok::Kw(kw, _) if PATTERNS.contains(&kw) => {
                     let r = self.pattern_kw(kw, c, &mut spec, false);
+                    // `gradient x, 0.5`: POV-Ray takes a comma before the amount.
+                    if r.is_ok() && matches!(c.peek(), Some(Tok::Comma(_))) {
+                        c.comma();
+                    }
                     if r.is_ok() && c.value_next() {
                         self.take_float(c, "the bump size").map(|x| bump = x)
                     } else {
@@ -919,6 +953,22 @@ impl Evaluator<'_> {
                     }
                 }
                 Tok::Kw("bump_size", _) => self.take_float(c, "the bump size").map(|x| bump = x),
+                Tok::Kw("accuracy", _) => {
+                    let (v, s) = c.value("the slope step")?;
+                    let a = self.to_float(&v, s)?;
+                    if a <= 0.0 {
+                        Err(Diagnostic::error(
+                            codes::OUT_OF_RANGE,
+                            s,
+                            format!("a normal's `accuracy` must be positive, found {a}"),
+                        )
+                        .with_help("POV-Ray's default is 0.02")
+                        .into())
+                    } else {
+                        accuracy = Some(a);
+                        Ok(())
+                    }
+                }
                 Tok::Kw(kw, _) if MODIFIERS.contains(&kw) => {
                     self.pattern_modifier(kw, c, &mut spec).map(|_| ())
                 }
@@ -930,6 +980,14 @@ impl Evaluator<'_> {
                     Ok(())
                 }
                 Tok::Block(_, Value::ColourMap(_) | Value::PigmentMap(_), _) => Ok(()),
+                Tok::Block("warp", Value::Warp(w), span) => {
+                    if spec.kind.is_none() {
+                        Err(warp_without_pattern(span, "normal"))
+                    } else {
+                        super::warps::push_warp(&mut spec, &w, transform.as_deref());
+                        Ok(())
+                    }
+                }
                 Tok::Val(Value::Poison, _) => Err(Fail::silent()),
                 other => Err(self.unexpected(c, &other, &normal_items())),
             };
@@ -944,6 +1002,7 @@ impl Evaluator<'_> {
             mods,
             bump_size: if spec.kind.is_none() { 0.0 } else { bump },
             transform,
+            accuracy,
         })
     }
 
@@ -1013,6 +1072,7 @@ impl Evaluator<'_> {
             once: false,
             uv_mapping: false,
             see_through: false,
+            mods: None,
         };
         let mut filter_all: Option<f64> = None;
         let mut transmit_all: Option<f64> = None;
@@ -1220,6 +1280,10 @@ impl Evaluator<'_> {
             Tok::Block(_, Value::Reflection(r), span) => {
                 c.once("reflection", span)?;
                 f.reflection = r;
+            }
+            Tok::Block(_, Value::Irid(i), span) => {
+                c.once("irid", span)?;
+                f.irid = i;
             }
             Tok::Block(_, Value::Poison, _) => return Err(Fail::silent()),
             Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_FINISH.contains(&kw) => {

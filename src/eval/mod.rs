@@ -39,6 +39,7 @@ mod timeline;
 mod trace;
 pub mod value;
 mod vocabulary;
+mod warps;
 
 pub use builtins::{is_function as is_builtin_function, BUILTIN_NAMES};
 pub use include::{find_include, load_file, search_dirs, LoadError, STDLIB};

@@ -11,9 +11,37 @@ use std::sync::Arc;
 
 /// Pattern keywords this release evaluates.
 pub(crate) const PATTERNS: &[&str] = &[
-    "checker", "hexagon", "brick", "gradient", "radial", "onion", "leopard", "spotted", "bozo",
-    "marble", "wood", "granite", "agate", "wrinkles", "ripples", "waves", "bumps", "dents",
-    "crackle", "function",
+    "checker",
+    "hexagon",
+    "brick",
+    "gradient",
+    "radial",
+    "onion",
+    "leopard",
+    "spotted",
+    "bozo",
+    "marble",
+    "wood",
+    "granite",
+    "agate",
+    "wrinkles",
+    "ripples",
+    "waves",
+    "bumps",
+    "dents",
+    "crackle",
+    "function",
+    // Geometric, quilted, spiral and fractal patterns.
+    "planar",
+    "spherical",
+    "cylindrical",
+    "boxed",
+    "quilted",
+    "spiral1",
+    "spiral2",
+    "mandel",
+    "julia",
+    "magnet",
 ];
 
 /// Pattern modifiers.
@@ -37,6 +65,12 @@ pub(crate) const MODIFIERS: &[&str] = &[
     "metric",
     "offset",
     "solid",
+    "control0",
+    "control1",
+    "exponent",
+    "exterior",
+    "interior",
+    "noise_generator",
 ];
 
 /// A pattern being read: kind, modifiers and map.
@@ -52,10 +86,13 @@ pub(crate) struct PatternSpec {
 impl PatternSpec {
     /// The modifiers with the pattern's own default wave.
     pub(crate) fn final_mods(&self) -> PatternMods {
-        let mut m = self.mods;
+        let mut m = self.mods.clone();
         let kind = self.kind.clone().unwrap_or(PatternKind::Bozo);
         m.wave = self.wave.unwrap_or(match kind {
-            PatternKind::Marble | PatternKind::Wood => Wave::Triangle,
+            PatternKind::Marble
+            | PatternKind::Wood
+            | PatternKind::Spiral1(_)
+            | PatternKind::Spiral2(_) => Wave::Triangle,
             _ => Wave::Ramp,
         });
         m
@@ -168,6 +205,8 @@ impl Evaluator<'_> {
             "waves" => PatternKind::Waves,
             "bumps" => PatternKind::Bumps,
             "function" => self.take_function_pattern(c)?,
+            "planar" | "spherical" | "cylindrical" | "boxed" | "quilted" | "spiral1"
+            | "spiral2" | "mandel" | "julia" | "magnet" => self.shape_pattern(kw, c)?,
             _ => PatternKind::Dents,
         };
         spec.kind = Some(kind.clone());
@@ -307,6 +346,9 @@ impl Evaluator<'_> {
                         .into());
                     }
                 }
+            }
+            "control0" | "control1" | "exponent" | "exterior" | "interior" | "noise_generator" => {
+                self.shape_modifier(kw, c, spec)?
             }
             "brick_size" | "mortar" => {
                 let (v, s) = c.value(&format!("a value after `{kw}`"))?;

@@ -177,6 +177,10 @@ pub enum Value {
     Function(Arc<super::function::Function>),
     /// A file opened by `#fopen`.
     File(Rc<std::cell::RefCell<super::file_io::OpenFile>>),
+    /// A `warp { … }` (only meaningful inside a pattern).
+    Warp(Arc<crate::scene::Warp>),
+    /// An `irid { … }` (only meaningful inside a finish).
+    Irid(crate::scene::Irid),
     /// The value of something whose evaluation failed (already reported); using it
     /// fails silently so one error does not cascade.
     Poison,
@@ -209,6 +213,8 @@ impl Value {
             Value::Material(_) => "a material",
             Value::Transform(_) => "a transform",
             Value::Reflection(_) => "a reflection block",
+            Value::Warp(_) => "a warp",
+            Value::Irid(_) => "an irid block",
             Value::Normal(_) => "a normal",
             Value::Interior(_) => "an interior",
             Value::ColourMap(_) => "a colour map",

@@ -745,17 +745,17 @@ pub const DOCS: &[Doc] = &[
         "falloff F",
         "Reflection falloff exponent; in a spotlight, the outer cone angle.",
     ),
-    later(
+    kw(
         "exponent",
         "exponent E",
-        "Exponent of a reflection's or light's falloff.",
+        "A fractal pattern's exponent (mandel, julia: 2 to 33); also POV-Ray's reflection and light falloff exponent.",
     ),
-    later(
+    kw(
         "irid",
         "irid { A thickness T turbulence U }",
-        "Iridescence (thin-film colours).",
+        "Iridescence in a finish: thin-film interference colours of amount A.",
     ),
-    later("thickness", "thickness T", "The film thickness of irid."),
+    kw("thickness", "thickness T", "The film thickness of irid (default 0)."),
     later(
         "reflection_exponent",
         "reflection_exponent E",
@@ -1053,10 +1053,10 @@ pub const DOCS: &[Doc] = &[
         "crackle solid",
         "crackle: one value per cell.",
     ),
-    later(
+    kw(
         "offset",
-        "crackle offset F",
-        "crackle: offsets the distances (not implemented yet).",
+        "warp { repeat D offset V }",
+        "repeat warp: the shift of each copy (crackle's offset is not implemented yet).",
     ),
     kw(
         "number_of_waves",
@@ -1345,7 +1345,11 @@ pub const DOCS: &[Doc] = &[
         "A sphere swept along a spline.",
     ),
     later("bicubic_patch", "bicubic_patch { … }", "A Bézier patch."),
-    later("warp", "warp { turbulence T }", "Warps a pattern."),
+    kw(
+        "warp",
+        "warp { turbulence T | repeat D | black_hole C, R | cylindrical | spherical | toroidal | planar … }",
+        "Moves the points of a pattern before it is evaluated; several apply in the order written, with the transforms between them.",
+    ),
     later(
         "normal_map",
         "normal_map { [V normal { … }] … }",
@@ -1549,6 +1553,31 @@ pub const DOCS: &[Doc] = &[
         "trace(OBJECT, START, DIRECTION [, NORMAL])",
         "Where the ray from START along DIRECTION first meets OBJECT (<0, 0, 0> on a miss); NORMAL, a name, receives the normal there.",
     ),
+    // Warps, geometric, quilted, spiral and fractal patterns.
+    func(
+        "vturbulence",
+        "vturbulence(LAMBDA, OMEGA, OCTAVES, <P>)",
+        "The turbulence displacement vector at P.",
+    ),
+    kw("planar", "planar", "Pattern: 1 on the x-z plane, falling to 0 at distance 1; as a warp, drops z."),
+    kw("cylindrical", "cylindrical", "Pattern: 1 on the y axis, falling to 0 at distance 1; as a warp, maps to (angle, height, distance)."),
+    kw("boxed", "boxed", "Pattern: 1 at the origin, falling to 0 on the cube of side 2."),
+    kw("toroidal", "warp { toroidal [major_radius R] }", "Warp: maps to (angle, tube angle, distance from the ring)."),
+    kw("quilted", "quilted [control0 C0] [control1 C1]", "Pattern: cushions in each unit cube."),
+    kw("control0", "quilted control0 C", "quilted: the first control of the cushion's curve (default 1)."),
+    kw("control1", "quilted control1 C", "quilted: the second control of the cushion's curve (default 1)."),
+    kw("spiral1", "spiral1 ARMS", "Pattern: arms winding around z like a screw thread."),
+    kw("spiral2", "spiral2 ARMS", "Pattern: two spirals twisting in opposite directions."),
+    kw("mandel", "mandel ITERATIONS [exponent N] [exterior T, F] [interior T, F]", "Pattern: the Mandelbrot set in the x-y plane."),
+    kw("julia", "julia <RE, IM>, ITERATIONS", "Pattern: the Julia set of the parameter, in the x-y plane."),
+    kw("magnet", "magnet 1|2 mandel ITERATIONS | magnet 1|2 julia <RE, IM>, ITERATIONS", "Pattern: the magnet fractals."),
+    kw("exterior", "exterior TYPE, FACTOR", "Fractal pattern: the value outside the set (default 1, 1: the iteration count)."),
+    kw("black_hole", "warp { black_hole CENTRE, RADIUS [strength S] [falloff F] [inverse] [repeat V] [turbulence V] }", "Warp: pulls the pattern towards a centre."),
+    kw("repeat", "warp { repeat D [offset V] [flip V] }", "Warp: repeats a slab of the pattern along one axis."),
+    kw("flip", "warp { repeat D flip V }", "repeat warp: mirror these axes in every other copy."),
+    kw("orientation", "orientation V", "Mapping warp: the direction its z lies along (default z)."),
+    kw("dist_exp", "dist_exp E", "Mapping warp: angular coordinates times distance^E (default 0)."),
+    kw("major_radius", "major_radius R", "toroidal warp: the ring's radius (default 1)."),
 ];
 
 /// The documentation of `word` as a keyword, function or constant (not a directive).

@@ -11,6 +11,7 @@ mod atmosphere;
 mod camera;
 mod film;
 mod focal_blur;
+mod irid;
 mod lights;
 mod media;
 mod passes;

@@ -1,10 +1,13 @@
 //! Pigment and normal evaluation: patterns, colour and pigment maps, image maps,
 //! bump perturbation, and the textures a patterned texture chooses.
 
+mod fractals;
 mod image_map;
 pub mod noise;
 pub mod patterns;
+mod shapes;
 pub mod texture_map;
+pub mod warps;
 
 pub use texture_map::{for_each_plain, plain_at};
 
@@ -140,6 +143,8 @@ fn bump_gain(kind: &crate::scene::PatternKind) -> f64 {
         K::Ripples => 0.36,
         K::Waves => 0.52,
         K::Wrinkles => LEAN_WRINKLES,
+        // POV-Ray's quilted normal adds the cushion vector itself.
+        K::Quilted { .. } => 1.0,
         _ => 0.12,
     }
 }
@@ -174,10 +179,15 @@ pub fn perturb(normal: &Normal, n: DVec3, p: DVec3, texture_from_world: Option<&
             .as_ref()
             .map(|x| x.inverse.transform_vector3(DVec3::ONE).length() / 3f64.sqrt())
             .unwrap_or(1.0);
-    let g = match analytic_slope(normal, p, texture_from_world) {
+    let analytic = if normal.accuracy.is_some() {
+        None
+    } else {
+        analytic_slope(normal, p, texture_from_world)
+    };
+    let g = match analytic {
         Some(g) => g,
         None => {
-            let h = 1e-4 / scale.max(1e-12);
+            let h = normal.accuracy.unwrap_or(1e-4) / scale.max(1e-12);
             let mut g = DVec3::ZERO;
             for (i, axis) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {
                 g[i] = (f(p + axis * h) - f(p - axis * h)) / (2.0 * h);
@@ -322,6 +332,7 @@ mod tests {
                     },
                     bump_size: 1.0,
                     transform: Some(Arc::new(tr)),
+                    accuracy: None,
                 };
                 for i in 0..50 {
                     let p = DVec3::new(
@@ -383,6 +394,7 @@ mod tests {
             mods: PatternMods::default(),
             bump_size: 1.0,
             transform: None,
+            accuracy: None,
         };
         let n = perturb(&nrm, DVec3::Y, DVec3::new(0.3, 0.0, 0.0), None);
         assert!(n.x < 0.0 && (n.length() - 1.0).abs() < 1e-9);

@@ -262,6 +262,28 @@ pub enum PatternKind {
     /// `function { … }`: a user function of x, y, z (wrapped into [0, 1] like
     /// `gradient`, as POV-Ray does).
     Function(Arc<crate::eval::function::Function>),
+    // --- Geometric, quilted, spiral and fractal patterns (one group) ---
+    /// `planar`: 1 on the x-z plane, down to 0 at distance 1.
+    Planar,
+    /// `spherical`: 1 at the origin, down to 0 at distance 1.
+    Spherical,
+    /// `cylindrical`: 1 on the y axis, down to 0 at distance 1.
+    Cylindrical,
+    /// `boxed`: 1 at the origin, down to 0 on the cube of side 2.
+    Boxed,
+    /// `quilted`: cushions in each unit cube, shaped by `control0` and `control1`.
+    Quilted {
+        /// `control0` (default 1).
+        control0: f64,
+        /// `control1` (default 1).
+        control1: f64,
+    },
+    /// `spiral1 N`: N arms winding around the z axis like a screw thread.
+    Spiral1(f64),
+    /// `spiral2 N`: two spirals of N arms twisting in opposite directions.
+    Spiral2(f64),
+    /// `mandel`, `julia`, `magnet`: escape-time fractals in the x-y plane.
+    Fractal(super::Fractal),
 }
 
 impl PatternKind {
@@ -292,8 +314,8 @@ pub enum Wave {
 }
 
 /// Pattern modifiers: `turbulence`, `octaves`, `omega`, `lambda`, wave form,
-/// `frequency`, `phase`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// `frequency`, `phase`, warps.
+#[derive(Clone, Debug, PartialEq)]
 pub struct PatternMods {
     /// `turbulence <V>` (zero: none).
     pub turbulence: glam::DVec3,
@@ -316,6 +338,8 @@ pub struct PatternMods {
     /// `number_of_waves` in force: how many wave centres `waves` and `ripples`
     /// sum (1 to 10; default 10).
     pub number_of_waves: u8,
+    /// `warp { … }` steps in the order written (applied last to first).
+    pub warps: Option<Arc<[super::WarpStep]>>,
 }
 
 impl Default for PatternMods {
@@ -331,6 +355,7 @@ impl Default for PatternMods {
             noise_generator: 2,
             agate_turb: 1.0,
             number_of_waves: 10,
+            warps: None,
         }
     }
 }
@@ -366,6 +391,9 @@ pub struct ImageMap {
     /// Whether light may pass: a pixel has filter or transmit, or the map is
     /// `once` (clear outside the unit square). Set once the pixels are known.
     pub see_through: bool,
+    /// `turbulence` and `warp { }` of the pigment, applied to the point before
+    /// the lookup (`None`: none).
+    pub mods: Option<PatternMods>,
 }
 
 /// `normal { PATTERN [bump_size] modifiers transforms }`.
@@ -379,6 +407,9 @@ pub struct Normal {
     pub bump_size: f64,
     /// Transforms of the normal pattern.
     pub transform: Option<Arc<Transform>>,
+    /// `accuracy`: the step of the slope's differences in pattern units (`None`:
+    /// rts's own small step).
+    pub accuracy: Option<f64>,
 }
 
 /// `reflection { MIN, MAX fresnel falloff metallic }` or `reflection COLOUR`.
@@ -435,6 +466,19 @@ pub struct Finish {
     pub conserve_energy: bool,
     /// `crand`: random darkening of each sample (0 = none).
     pub crand: f64,
+    /// `irid { … }`: thin-film interference (amount 0 = none).
+    pub irid: Irid,
+}
+
+/// `irid { AMOUNT thickness T turbulence U }`: thin-film interference colours.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Irid {
+    /// How much of the diffuse colour the interference replaces (0 = none).
+    pub amount: f64,
+    /// `thickness` of the film (default 0).
+    pub thickness: f64,
+    /// `turbulence`: how much the thickness varies (default 0).
+    pub turbulence: f64,
 }
 
 impl Default for Finish {
@@ -452,6 +496,7 @@ impl Default for Finish {
             emission: DVec3::ZERO,
             conserve_energy: false,
             crand: 0.0,
+            irid: Irid::default(),
         }
     }
 }

@@ -15,6 +15,7 @@ mod media;
 mod object;
 mod path;
 mod transform;
+mod warp;
 
 pub use animation::{Timeline, DEFAULT_FPS};
 pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, SkySphere};
@@ -22,14 +23,15 @@ pub use blob::{BlobComponent, BlobData, BlobKind};
 pub use camera::{Camera, CameraKind};
 pub use light::{AreaLight, Beam, Light, LightKind};
 pub use material::{
-    compose, Colour, Finish, ImageMap, Interior, Mapped, Normal, Pattern, PatternKind, PatternMap,
-    PatternMods, PatternedTexture, Pigment, Reflection, Texture, TextureEntries, TextureMapEntries,
-    Wave,
+    compose, Colour, Finish, ImageMap, Interior, Irid, Mapped, Normal, Pattern, PatternKind,
+    PatternMap, PatternMods, PatternedTexture, Pigment, Reflection, Texture, TextureEntries,
+    TextureMapEntries, Wave,
 };
 pub use media::{Media, Scattering, ScatteringKind};
 pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape, TextData};
 pub use path::{PathTracing, PixelFilter};
 pub use transform::Transform;
+pub use warp::{Fractal, FractalKind, MappingWarp, Warp, WarpStep};
 
 use glam::DVec3;
 

@@ -8,6 +8,10 @@ use std::f64::consts::{PI, TAU};
 /// The colour of image map `im` at pattern-space point `p` (surface coordinates
 /// `uv` when the map uses `uv_mapping`).
 pub fn lookup(im: &ImageMap, p: DVec3, uv: Option<DVec2>) -> Colour {
+    let p = match &im.mods {
+        Some(m) => super::patterns::warp(p, m),
+        None => p,
+    };
     let (u, v) = if im.uv_mapping {
         match uv {
             Some(uv) => (uv.x, uv.y),
@@ -85,6 +89,7 @@ mod tests {
             once: false,
             uv_mapping: false,
             see_through: false,
+            mods: None,
         }
     }
 

@@ -128,6 +128,14 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
             (0.5 + spread * sum).clamp(0.0, 1.0)
         }
         PatternKind::Function(f) => f.eval3(p),
+        PatternKind::Planar
+        | PatternKind::Spherical
+        | PatternKind::Cylindrical
+        | PatternKind::Boxed
+        | PatternKind::Quilted { .. }
+        | PatternKind::Spiral1(_)
+        | PatternKind::Spiral2(_)
+        | PatternKind::Fractal(_) => super::shapes::raw(kind, p),
         PatternKind::Checker | PatternKind::Hexagon | PatternKind::Brick { .. } => 0.0,
     }
 }
@@ -158,8 +166,12 @@ const CENTRES: [DVec3; 10] = [
     DVec3::new(0.03, -0.24, -0.33),
 ];
 
-/// The point after turbulence (`p + turbulence · turb(p)`).
+/// The point after the `warp { }` steps and turbulence (`p + turbulence · turb(p)`).
 pub fn warp(p: DVec3, m: &PatternMods) -> DVec3 {
+    let p = match &m.warps {
+        Some(w) => super::warps::apply(w, p),
+        None => p,
+    };
     if m.turbulence == DVec3::ZERO {
         return p;
     }
@@ -267,6 +279,7 @@ pub fn value(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
             v.clamp(0.0, 1.0)
         }
         PatternKind::Ripples | PatternKind::Waves => wave(m.wave, v),
+        k if super::shapes::is_shape(k) => super::shapes::wave(m.wave, v * m.frequency + m.phase),
         _ => wave(m.wave, v * m.frequency + m.phase),
     }
 }
@@ -292,6 +305,7 @@ pub fn lean_vector(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<DVec
             // Leaning *with* the summed magnitudes (the normal gains them).
             Some(-sum)
         }
+        PatternKind::Quilted { .. } => Some(-super::shapes::quilt_vector(kind, warp(p, m))),
         _ => None,
     }
 }
@@ -301,7 +315,7 @@ pub fn lean_vector(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<DVec
 /// `gradient`) without turbulence; `None` for the others, whose slope is taken by
 /// differences. Equal to the differences of [`value`] (a unit test checks).
 pub fn value_gradient(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<DVec3> {
-    if m.turbulence != DVec3::ZERO || m.wave != Wave::Ramp {
+    if m.turbulence != DVec3::ZERO || m.wave != Wave::Ramp || m.warps.is_some() {
         return None;
     }
     let plain = m.frequency == 1.0 && m.phase == 0.0;
