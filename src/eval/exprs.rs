@@ -730,21 +730,17 @@ fn srgb_to_linear(c: f64) -> f64 {
 /// implement yet and does not reserve: met where a name is expected, they are
 /// reported as unsupported rather than as unknown identifiers.
 const POV_KEYWORDS_NOT_YET: &[&str] = &[
-    "average",
     "boxed",
     "cells",
     "cylindrical",
     "density_file",
     "facets",
-    "image_pattern",
     "julia",
     "mandel",
     "omnimax",
     "pavement",
-    "pigment_pattern",
     "planar",
     "quilted",
-    "slope",
     "spiral1",
     "spiral2",
     "square",

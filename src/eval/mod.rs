@@ -27,6 +27,7 @@ mod mesh_cache;
 mod modify;
 mod objects;
 mod path_tracing;
+mod pattern_blocks;
 mod patterns;
 mod revolve;
 mod scope;
@@ -206,6 +207,7 @@ pub fn eval_cached(
         built_objects: Default::default(),
         blob_items: false,
         pending_function: None,
+        pending_pattern: None,
     };
     ev.define_command_line();
     ev.run_top(&file.items);
@@ -280,6 +282,9 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) blob_items: bool,
     /// A `function { }` met as a pattern, until the pattern reader takes it.
     pub(crate) pending_function: Option<Arc<function::Function>>,
+    /// The pattern of a pattern block (`pigment_pattern { … }`) just met among a
+    /// pigment's, normal's or texture's items (see `block_pattern_token`).
+    pub(crate) pending_pattern: Option<crate::scene::PatternKind>,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps

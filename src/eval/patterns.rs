@@ -11,9 +11,30 @@ use std::sync::Arc;
 
 /// Pattern keywords this release evaluates.
 pub(crate) const PATTERNS: &[&str] = &[
-    "checker", "hexagon", "brick", "gradient", "radial", "onion", "leopard", "spotted", "bozo",
-    "marble", "wood", "granite", "agate", "wrinkles", "ripples", "waves", "bumps", "dents",
-    "crackle", "function",
+    "checker",
+    "hexagon",
+    "brick",
+    "gradient",
+    "radial",
+    "onion",
+    "leopard",
+    "spotted",
+    "bozo",
+    "marble",
+    "wood",
+    "granite",
+    "agate",
+    "wrinkles",
+    "ripples",
+    "waves",
+    "bumps",
+    "dents",
+    "crackle",
+    "function",
+    "pigment_pattern",
+    "image_pattern",
+    "slope",
+    "average",
 ];
 
 /// Pattern modifiers.
@@ -168,6 +189,8 @@ impl Evaluator<'_> {
             "waves" => PatternKind::Waves,
             "bumps" => PatternKind::Bumps,
             "function" => self.take_function_pattern(c)?,
+            "pigment_pattern" | "image_pattern" | "slope" => self.take_block_pattern(kw, c)?,
+            "average" => PatternKind::Average,
             _ => PatternKind::Dents,
         };
         spec.kind = Some(kind.clone());
@@ -414,18 +437,15 @@ impl Evaluator<'_> {
                     // `[V pigment { … }]`, `[V NAME]`, `[V COLOUR]` or, as POV-Ray
                     // also allows, `[V PIGMENT-BODY]` (`[0.5 checker rgb 1, rgb 0]`).
                     let mut it = items.into_iter().peekable();
-                    let v = match it.next() {
-                        Some(Tok::Val(Value::Float(x), _)) => x,
-                        Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
-                        _ => {
-                            return Err(Diagnostic::error(
-                                codes::MISSING_VALUE,
-                                span,
-                                "a pigment map entry needs a value and a pigment",
-                            )
-                            .with_help("write entries as `[VALUE pigment { … }]`")
-                            .into())
+                    // An `average` map may leave its weights out (1 each).
+                    let v = match it.peek() {
+                        Some(Tok::Val(Value::Float(x), _)) => {
+                            let x = *x;
+                            it.next();
+                            x
                         }
+                        Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
+                        _ => 1.0,
                     };
                     if matches!(it.peek(), Some(Tok::Comma(_))) {
                         it.next();

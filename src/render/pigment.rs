@@ -3,12 +3,15 @@
 
 mod image_map;
 pub mod noise;
+mod normal_blend;
 pub mod patterns;
+pub mod slope;
 pub mod texture_map;
 
+use normal_blend::perturb_blend;
 pub use texture_map::{for_each_plain, plain_at};
 
-use crate::scene::{Colour, Mapped, Normal, Pattern, PatternMap, Pigment};
+use crate::scene::{Colour, Mapped, Normal, Pattern, PatternKind, PatternMap, Pigment};
 use glam::{DMat4, DVec2, DVec3};
 
 /// Added to each coordinate before flooring in `checker`. POV-Ray 3.7 shows the
@@ -56,6 +59,9 @@ fn mapped(m: &Mapped, p: DVec3, uv: Option<DVec2>) -> Colour {
             _ => Colour::BLACK,
         };
     }
+    if m.kind == PatternKind::Average {
+        return average(&m.map, p, uv);
+    }
     let v = patterns::value(&m.kind, p, &m.mods);
     match &m.map {
         PatternMap::Colours(entries) => colour_at(entries, v),
@@ -82,6 +88,44 @@ fn mapped(m: &Mapped, p: DVec3, uv: Option<DVec2>) -> Colour {
         PatternMap::List(l) => l
             .first()
             .map_or(Colour::BLACK, |pig| evaluate_uv(pig, p, uv)),
+    }
+}
+
+/// `average`: the entries of a pigment map (or colour map) averaged, each
+/// weighed by its map value (POV-Ray's weights).
+fn average(map: &PatternMap, p: DVec3, uv: Option<DVec2>) -> Colour {
+    let mut sum = Colour::BLACK;
+    let mut total = 0.0;
+    let mut add = |w: f64, c: Colour| {
+        sum.rgb += c.rgb * w;
+        sum.filter += c.filter * w;
+        sum.transmit += c.transmit * w;
+        total += w;
+    };
+    match map {
+        PatternMap::Pigments(entries) => {
+            for (w, pig) in entries.iter() {
+                add(*w, evaluate_uv(pig, p, uv));
+            }
+        }
+        PatternMap::Colours(entries) => {
+            for (w, c) in entries.iter() {
+                add(*w, *c);
+            }
+        }
+        PatternMap::List(l) => {
+            for pig in l {
+                add(1.0, evaluate_uv(pig, p, uv));
+            }
+        }
+    }
+    if total == 0.0 {
+        return Colour::BLACK;
+    }
+    Colour {
+        rgb: sum.rgb / total,
+        filter: sum.filter / total,
+        transmit: sum.transmit / total,
     }
 }
 
@@ -149,6 +193,9 @@ fn bump_gain(kind: &crate::scene::PatternKind) -> f64 {
 /// texture's space. As in POV-Ray the normal leans against the pattern's slope on
 /// the side the surface is seen from.
 pub fn perturb(normal: &Normal, n: DVec3, p: DVec3, texture_from_world: Option<&DMat4>) -> DVec3 {
+    if let Some(b) = &normal.blend {
+        return perturb_blend(normal, b, n, p, texture_from_world);
+    }
     if normal.bump_size == 0.0 {
         return n;
     }
@@ -322,6 +369,7 @@ mod tests {
                     },
                     bump_size: 1.0,
                     transform: Some(Arc::new(tr)),
+                    blend: None,
                 };
                 for i in 0..50 {
                     let p = DVec3::new(
@@ -383,6 +431,7 @@ mod tests {
             mods: PatternMods::default(),
             bump_size: 1.0,
             transform: None,
+            blend: None,
         };
         let n = perturb(&nrm, DVec3::Y, DVec3::new(0.3, 0.0, 0.0), None);
         assert!(n.x < 0.0 && (n.length() - 1.0).abs() < 1e-9);

@@ -25,6 +25,7 @@ pub use material::{
     PatternMods, PatternedTexture, Pigment, Reflection, Texture, TextureEntries, TextureMapEntries,
     Wave,
 };
+pub use material::{ImagePattern, ImageUse, NormalBlend, SlopeSpec};
 pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape, TextData};
 pub use path::{PathTracing, PixelFilter};
 pub use transform::Transform;
