@@ -172,7 +172,7 @@ impl Evaluator<'_> {
                 self.report(f);
             }
         }
-        let ip = self.load_image_pattern(spec, c, "bump_map", ImageUse::Index)?;
+        let ip = self.load_image_pattern(spec, c, "bump_map", ImageUse::Colour)?;
         Ok(Normal {
             kind: PatternKind::ImagePattern(Arc::new(ip)),
             mods: PatternMods::default(),

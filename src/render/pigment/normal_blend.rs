@@ -2,16 +2,17 @@
 //! the normals of a list pattern, `slope_map` and `bump_map`.
 
 use super::{patterns, perturb, texture_map::map_lookup};
-use crate::scene::{Normal, NormalBlend, PatternKind};
+use crate::scene::{ImageUse, Normal, NormalBlend, PatternKind};
 use glam::{DMat4, DVec2, DVec3};
 
 /// How strongly the slope of a `slope_map` height tilts the normal per unit of
-/// `bump_size` (as a plain pattern's slope does: see `bump_gain`).
-const SLOPE_MAP_GAIN: f64 = 0.12;
+/// `bump_size` (fitted to POV-Ray 3.7: a lit plane with `gradient x` shaped by
+/// a slope map shades alike at its steepest rises and falls).
+const SLOPE_MAP_GAIN: f64 = 0.164;
 
 /// How strongly a `bump_map` tilts the normal per unit of `bump_size` and of
-/// height change across the whole image.
-const BUMP_MAP_GAIN: f64 = 0.0125;
+/// height change from one pixel to the next.
+const BUMP_MAP_GAIN: f64 = 1.0;
 
 /// The map from world space into `normal`'s pattern space, given the one into
 /// its texture's space.
@@ -69,18 +70,41 @@ pub(super) fn perturb_blend(
             tilt(n, p, space.as_ref(), h, normal.bump_size * SLOPE_MAP_GAIN)
         }
         NormalBlend::BumpMap => {
-            let h = |x: DVec3| patterns::value(&normal.kind, x, &normal.mods);
-            let size = match &normal.kind {
-                PatternKind::ImagePattern(ip) => f64::from(ip.image.width.max(ip.image.height)),
-                _ => 1.0,
+            let PatternKind::ImagePattern(ip) = &normal.kind else {
+                return n;
             };
-            tilt(
-                n,
-                p,
-                space.as_ref(),
-                h,
-                normal.bump_size * BUMP_MAP_GAIN * size,
-            )
+            // Heights per pixel: the slope in image units over the pixel size
+            // (measured on POV-Ray 3.7: `bump_size 3` of a smooth grey ramp
+            // barely tilts, a one-pixel step of 0.5 tilts by about 1.5).
+            // `use_index` heights are the palette indices themselves (0 to
+            // 255; measured: 255 times as steep as the same image's grey).
+            let unit = if ip.source == ImageUse::Index {
+                255.0
+            } else {
+                1.0
+            };
+            let per_pixel = DVec3::new(
+                unit / f64::from(ip.image.width.max(1)),
+                unit / f64::from(ip.image.height.max(1)),
+                0.0,
+            );
+            let h = |x: DVec3| patterns::value(&normal.kind, x, &normal.mods);
+            let step = 1e-4;
+            let mut g = DVec3::ZERO;
+            for (i, axis) in [DVec3::X, DVec3::Y].into_iter().enumerate() {
+                g[i] = (h(q + axis * step) - h(q - axis * step)) / (2.0 * step) * per_pixel[i];
+            }
+            // Back to world directions (the transposed linear part of the
+            // world → pattern map), keeping the pattern's units.
+            let (g, scale) = match &space {
+                Some(m) => (
+                    m.transpose().transform_vector3(g),
+                    m.transform_vector3(DVec3::ONE).length() / 3f64.sqrt(),
+                ),
+                None => (g, 1.0),
+            };
+            let g = g / scale.max(1e-12);
+            n - normal.bump_size * BUMP_MAP_GAIN * (g - g.dot(n) * n)
         }
     };
     let len = out.length();
