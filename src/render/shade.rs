@@ -126,6 +126,13 @@ fn shade(
     ctx: &mut TraceCtx,
 ) -> DVec3 {
     pigment::slope::set_surface_normal(s.normal);
+    // `interior_texture`: seen from inside the surface (the ray leaving
+    // through it), as POV-Ray shades it.
+    if let Some(inside) = &s.texture.interior_texture {
+        if ray.dir.dot(s.geo_normal) > 0.0 {
+            return shade_texture(world, s, inside, ray, level, weight, ctx);
+        }
+    }
     if let Some((blob, local)) = s.blob {
         // A blob's component textures: each shaded with its share of the
         // field at the point, and the colours averaged (as POV-Ray does).

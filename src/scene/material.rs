@@ -51,6 +51,9 @@ pub struct Texture {
     /// textures, and this texture's own pigment, normal and finish are unused.
     /// Patterned textures are never layered (`under` is `None`), as in POV-Ray.
     pub patterned: Option<Arc<PatternedTexture>>,
+    /// `interior_texture { … }` of the object: the texture seen where a ray
+    /// meets the surface from inside (`None`: this texture on both sides).
+    pub interior_texture: Option<Arc<Texture>>,
 }
 
 /// A pattern that chooses between whole textures.
@@ -109,6 +112,11 @@ impl Texture {
     /// Appends `t` to the transforms of every pattern of the texture (pigment and
     /// normal), as `translate`/`rotate`/`scale` written after them do.
     pub fn transform_patterns(&mut self, t: &Transform) {
+        if let Some(it) = &mut self.interior_texture {
+            let mut inner = (**it).clone();
+            inner.transform_patterns(t);
+            *it = Arc::new(inner);
+        }
         if let Some(pt) = &mut self.patterned {
             // The transform applies to the whole texture: the pattern and every
             // texture it chooses (POV-Ray's manual; measured: a `scale` written

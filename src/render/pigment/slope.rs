@@ -25,8 +25,10 @@ pub fn surface_normal() -> DVec3 {
 }
 
 /// The value of `slope` at pattern-space point `p` for the current surface
-/// normal: `(1 + cos θ) / 2` for θ the angle between the normal and the
-/// direction (0 facing away, 0.5 across, 1 facing it), rescaled from
+/// normal: `1 - θ / π` for θ the angle between the normal and the direction
+/// (0 facing away, 0.5 across, 1 facing it; linear in the angle, as measured
+/// on POV-Ray 3.7, and in world space: the pattern's transforms do not turn
+/// it), rescaled from
 /// `[lo, hi]` to [0, 1]; with `altitude`, the point's height along the altitude
 /// direction rescaled alike, the two weighed by the lengths of their
 /// directions.
@@ -45,7 +47,10 @@ pub fn value(s: &SlopeSpec, p: DVec3) -> f64 {
     } else {
         DVec3::Y
     };
-    let slope = rescale(0.5 * (1.0 + n.dot(dir)), s.slope_range);
+    let slope = rescale(
+        0.5 + n.dot(dir).clamp(-1.0, 1.0).asin() / std::f64::consts::PI,
+        s.slope_range,
+    );
     let v = match s.altitude {
         None => slope,
         Some(a) => {
@@ -60,7 +65,15 @@ pub fn value(s: &SlopeSpec, p: DVec3) -> f64 {
             }
         }
     };
-    v.clamp(0.0, 1.0)
+    // Past [0, 1] the value wraps, as POV-Ray 3.7 shows (a value of 1.08
+    // shows as 0.08), while 1 itself stays 1.
+    if v > 1.0 {
+        v % 1.00001
+    } else if v < 0.0 {
+        v.rem_euclid(1.0)
+    } else {
+        v
+    }
 }
 
 #[cfg(test)]
