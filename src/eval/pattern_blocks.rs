@@ -160,7 +160,11 @@ impl Evaluator<'_> {
     pub(crate) fn bump_map(&mut self, c: &mut Cursor) -> R<Normal> {
         let mut spec = self.image_spec();
         let mut bump_size = 1.0;
-        let items = [IMAGE_PATTERN_ITEMS, &["bump_size"]].concat();
+        let items = [
+            &IMAGE_PATTERN_ITEMS[..6],
+            &["use_color", "use_colour", "use_index", "bump_size"],
+        ]
+        .concat();
         while let Some(tok) = c.next() {
             let r = match tok {
                 Tok::Kw("bump_size", _) => {
@@ -187,7 +191,7 @@ impl Evaluator<'_> {
     pub(crate) fn material_map(&mut self, c: &mut Cursor) -> R<Texture> {
         let mut spec = self.image_spec();
         let mut textures: Vec<Arc<Texture>> = Vec::new();
-        let items = [IMAGE_PATTERN_ITEMS, &["texture"]].concat();
+        let items = [&IMAGE_PATTERN_ITEMS[..6], &["texture"]].concat();
         while let Some(tok) = c.next() {
             let r = match tok {
                 Tok::Block("texture", Value::Texture(t), _) | Tok::Val(Value::Texture(t), _) => {
@@ -270,7 +274,7 @@ impl Evaluator<'_> {
                 Ok(())
             }
             Tok::Kw(kw @ ("use_alpha" | "use_color" | "use_colour" | "use_index"), span) => {
-                if kw == "use_alpha" && !items.contains(&"use_alpha") {
+                if !items.contains(&kw) {
                     return Err(self.unknown_keyword(c, kw, span, items));
                 }
                 spec.source = Some(match kw {
