@@ -224,7 +224,20 @@ pub fn perturb(normal: &Normal, n: DVec3, p: DVec3, texture_from_world: Option<&
     let g = match analytic_slope(normal, p, texture_from_world) {
         Some(g) => g,
         None => {
-            let h = 1e-4 / scale.max(1e-12);
+            // Patterns of steps (list patterns, a pigment's or an image's
+            // values) are differenced over POV-Ray's default `accuracy` of
+            // 0.02, so their edges show as bevels as in POV-Ray; smooth ones
+            // over a tiny step.
+            let step = if normal.kind.is_list()
+                || matches!(
+                    normal.kind,
+                    PatternKind::PigmentPattern(_) | PatternKind::ImagePattern(_)
+                ) {
+                0.02
+            } else {
+                1e-4
+            };
+            let h = step / scale.max(1e-12);
             let mut g = DVec3::ZERO;
             for (i, axis) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {
                 g[i] = (f(p + axis * h) - f(p - axis * h)) / (2.0 * h);
