@@ -281,18 +281,10 @@ pub fn value(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
             v.clamp(0.0, 1.0)
         }
         PatternKind::Ripples | PatternKind::Waves => wave(m.wave, v),
-        // A function's value of exactly 1 stays 1 (POV-Ray wraps modulo
-        // 1.00001: `average` of `function { … } color_map { … }` entries that
-        // reach 1 shows the map's top colour in POV-Ray 3.7).
-        PatternKind::Function(_) if m.wave == Wave::Ramp => {
-            let x = v * m.frequency + m.phase;
-            let r = x % 1.00001;
-            if r < 0.0 {
-                r - r.floor()
-            } else {
-                r
-            }
-        }
+        // A function's value of exactly 1 stays 1 (as POV-Ray 3.7 shows:
+        // `average` of `function { … } color_map { … }` entries that reach 1
+        // shows the map's top colour), other values wrap as gradient's do.
+        PatternKind::Function(_) if m.wave == Wave::Ramp && v * m.frequency + m.phase == 1.0 => 1.0,
         _ => wave(m.wave, v * m.frequency + m.phase),
     }
 }
