@@ -103,6 +103,8 @@ pub const NO_LIGHTS: &str = "rts::lint::no_lights";
 pub const WARP_WITHOUT_PATTERN: &str = "rts::eval::warp_without_pattern";
 /// A patterned texture layered over or under another texture.
 pub const PATTERNED_LAYER: &str = "rts::eval::patterned_layer";
+/// A `slope_map` entry that is not `[VALUE, <HEIGHT, SLOPE>]`.
+pub const SLOPE_MAP_ENTRY: &str = "rts::eval::slope_map_entry";
 /// Map entries whose values go down (warning).
 pub const MAP_OUT_OF_ORDER: &str = "rts::lint::map_out_of_order";
 /// A deprecated or ignored construct (warning).

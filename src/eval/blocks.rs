@@ -52,6 +52,14 @@ pub(crate) const BLOCKS: &[&str] = &[
     "contained_by",
     "warp",
     "irid",
+    "pigment_pattern",
+    "image_pattern",
+    "slope",
+    "normal_map",
+    "slope_map",
+    "bump_map",
+    "material_map",
+    "interior_texture",
 ];
 
 /// POV-Ray blocks that a later release implements.
@@ -59,7 +67,6 @@ const LATER_BLOCKS: &[&str] = &[
     "julia_fractal",
     "sphere_sweep",
     "bicubic_patch",
-    "normal_map",
     "photons",
     "radiosity",
     "light_group",
@@ -113,7 +120,8 @@ impl Evaluator<'_> {
         let outer = std::mem::replace(&mut self.coefficient_lists, lists);
         // Texture bodies (also a texture_map's entries) and objects read a
         // pigment, finish or normal as a change to the one in force.
-        let defer = matches!(kw, "texture" | "texture_map") || OBJECT_BLOCKS.contains(&kw);
+        let defer = matches!(kw, "texture" | "texture_map" | "interior_texture")
+            || OBJECT_BLOCKS.contains(&kw);
         let outer_defer = std::mem::replace(&mut self.defer_material_blocks, defer);
         let in_blob = std::mem::replace(&mut self.blob_items, kw == "blob");
         self.expand(&b.items, &mut toks);
@@ -137,7 +145,16 @@ impl Evaluator<'_> {
             | "uv_vectors" | "face_indices" | "normal_indices" | "uv_indices" | "texture_list" => {
                 self.list_block(&mut c)?
             }
-            "texture" => Value::Texture(std::sync::Arc::new(self.texture(&mut c)?)),
+            "texture" | "interior_texture" => {
+                Value::Texture(std::sync::Arc::new(self.texture(&mut c)?))
+            }
+            "pigment_pattern" => self.pigment_pattern(&mut c)?,
+            "image_pattern" => self.image_pattern(&mut c)?,
+            "slope" => self.slope_block(&mut c)?,
+            "normal_map" => Value::NormalMap(std::sync::Arc::new(self.normal_map(&mut c)?)),
+            "slope_map" => Value::SlopeMap(std::sync::Arc::new(self.slope_map(&mut c)?)),
+            "bump_map" => Value::Normal(std::sync::Arc::new(self.bump_map(&mut c)?)),
+            "material_map" => Value::Texture(std::sync::Arc::new(self.material_map(&mut c)?)),
             "pigment" => Value::Pigment(std::sync::Arc::new(self.pigment(&mut c)?)),
             "finish" => Value::Finish(std::sync::Arc::new(self.finish(&mut c)?)),
             "reflection" => Value::Reflection(self.reflection(&mut c)?),

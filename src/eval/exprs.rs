@@ -745,15 +745,11 @@ fn srgb_to_linear(c: f64) -> f64 {
 /// implement yet and does not reserve: met where a name is expected, they are
 /// reported as unsupported rather than as unknown identifiers.
 const POV_KEYWORDS_NOT_YET: &[&str] = &[
-    "average",
     "cells",
     "density_file",
     "facets",
-    "image_pattern",
     "omnimax",
     "pavement",
-    "pigment_pattern",
-    "slope",
     "square",
     "tiling",
     "triangular",

@@ -8,8 +8,9 @@ use super::value::Value;
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
 use crate::scene::{
-    compose, Colour, Finish, ImageMap, Interior, Mapped, Normal, Pattern, PatternKind, PatternMap,
-    PatternedTexture, Pigment, Reflection, Texture, TextureEntries, TextureMapEntries, Transform,
+    compose, Colour, Finish, ImageMap, Interior, Mapped, Normal, NormalBlend, Pattern, PatternKind,
+    PatternMap, PatternedTexture, Pigment, Reflection, Texture, TextureEntries, TextureMapEntries,
+    Transform,
 };
 use crate::span::Span;
 use glam::DVec3;
@@ -254,7 +255,7 @@ impl Evaluator<'_> {
             _ => ((*self.default_texture).clone(), false),
         };
         // A declared patterned texture takes transforms only.
-        let declared_patterned = tex.patterned.is_some();
+        let mut declared_patterned = tex.patterned.is_some();
         // Whether the texture has items of its own: a declared texture it starts
         // from, or a pigment, normal or finish written in this block.
         let mut plain_items = declared;
@@ -262,6 +263,7 @@ impl Evaluator<'_> {
         let mut pat: Option<TexturePatternSpec> = None;
         while let Some(tok) = c.next() {
             let tok = self.function_pattern_token(tok);
+            let tok = self.block_pattern_token(tok);
             // `pigment { … }`, `finish { … }`, `normal { … }` modify the texture's own.
             let tok = match tok {
                 Tok::Deferred(b) => {
@@ -316,6 +318,22 @@ impl Evaluator<'_> {
                     let spec = &mut pat.as_mut().expect("checked").spec;
                     let _ = span;
                     self.pattern_modifier(kw, c, spec).map(|_| ())
+                }
+                Tok::Block("material_map", Value::Texture(t), span) => {
+                    if pat.is_some() || plain_items {
+                        Err(Diagnostic::error(
+                            codes::UNEXPECTED_ITEM,
+                            span,
+                            "a `material_map` is the whole texture",
+                        )
+                        .with_help("write it alone in its `texture { material_map { … } }`, with transforms only")
+                        .into())
+                    } else {
+                        tex = (*t).clone();
+                        plain_items = true;
+                        declared_patterned = true;
+                        Ok(())
+                    }
                 }
                 Tok::Block("texture_map", Value::TextureMap(m), span) => {
                     self.set_texture_map(m, span, &mut pat, declared_patterned)
@@ -627,21 +645,14 @@ impl Evaluator<'_> {
             match tok {
                 Tok::Bracket(items, span) => {
                     let mut it = items.into_iter().peekable();
-                    let v = match it.next() {
-                        Some(Tok::Val(Value::Float(x), _)) => x,
-                        Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
-                        Some(other) => {
-                            return Err(Diagnostic::error(
-                                codes::MISSING_VALUE,
-                                other.span(),
-                                format!(
-                                    "a texture map entry starts with its value, found {}",
-                                    other.describe()
-                                ),
-                            )
-                            .with_help(help)
-                            .into())
+                    // An `average` map may leave its weights out (1 each).
+                    let v = match it.peek() {
+                        Some(Tok::Val(Value::Float(x), _)) => {
+                            let x = *x;
+                            it.next();
+                            x
                         }
+                        Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
                         None => {
                             return Err(Diagnostic::error(
                                 codes::MISSING_VALUE,
@@ -651,6 +662,7 @@ impl Evaluator<'_> {
                             .with_help(help)
                             .into())
                         }
+                        _ => 1.0,
                     };
                     if matches!(it.peek(), Some(Tok::Comma(_))) {
                         it.next();
@@ -739,6 +751,7 @@ impl Evaluator<'_> {
         let mut uv_mapping = false;
         while let Some(tok) = c.next() {
             let tok = self.function_pattern_token(tok);
+            let tok = self.block_pattern_token(tok);
             let r: R<()> = match tok {
                 Tok::Val(Value::Pigment(p), _) if !pattern_given => {
                     pig = (*p).clone();
@@ -932,6 +945,8 @@ impl Evaluator<'_> {
         let mut bump = n.as_ref().map_or(0.5, |x| x.bump_size);
         let mut transform = n.as_ref().and_then(|x| x.transform.clone());
         let mut accuracy = n.as_ref().and_then(|x| x.accuracy);
+        let mut blend = n.as_ref().and_then(|x| x.blend.clone());
+        let mut list: Vec<Normal> = Vec::new();
         if let Some(x) = &n {
             spec.kind = Some(x.kind.clone());
             spec.mods = x.mods.clone();
@@ -939,9 +954,15 @@ impl Evaluator<'_> {
         }
         while let Some(tok) = c.next() {
             let tok = self.function_pattern_token(tok);
+            let tok = self.block_pattern_token(tok);
             let r: R<()> = match tok {
                 Tok::Kw(kw, _) if PATTERNS.contains(&kw) => {
                     let r = self.pattern_kw(kw, c, &mut spec, false);
+                    // A new pattern replaces a declared normal's map or image.
+                    blend = None;
+                    if r.is_ok() && spec.kind.as_ref().is_some_and(PatternKind::is_list) {
+                        self.list_normals(c, kw, &mut list);
+                    }
                     // `gradient x, 0.5`: POV-Ray takes a comma before the amount.
                     if r.is_ok() && matches!(c.peek(), Some(Tok::Comma(_))) {
                         c.comma();
@@ -979,6 +1000,20 @@ impl Evaluator<'_> {
                     compose(&mut transform, &t);
                     Ok(())
                 }
+                Tok::Block(_, Value::NormalMap(m), _) | Tok::Val(Value::NormalMap(m), _) => {
+                    blend = Some(Arc::new(NormalBlend::Map((*m).clone())));
+                    Ok(())
+                }
+                Tok::Block(_, Value::SlopeMap(m), _) | Tok::Val(Value::SlopeMap(m), _) => {
+                    blend = Some(Arc::new(NormalBlend::Slopes((*m).clone())));
+                    Ok(())
+                }
+                Tok::Block("bump_map", Value::Normal(b), _) => {
+                    spec.kind = Some(b.kind.clone());
+                    bump = b.bump_size;
+                    blend = b.blend.clone();
+                    Ok(())
+                }
                 Tok::Block(_, Value::ColourMap(_) | Value::PigmentMap(_), _) => Ok(()),
                 Tok::Block("warp", Value::Warp(w), span) => {
                     if spec.kind.is_none() {
@@ -988,7 +1023,7 @@ impl Evaluator<'_> {
                         Ok(())
                     }
                 }
-                Tok::Val(Value::Poison, _) => Err(Fail::silent()),
+                Tok::Val(Value::Poison, _) | Tok::Block(_, Value::Poison, _) => Err(Fail::silent()),
                 other => Err(self.unexpected(c, &other, &normal_items())),
             };
             if let Err(f) = r {
@@ -997,13 +1032,60 @@ impl Evaluator<'_> {
         }
         let kind = spec.kind.clone().unwrap_or(PatternKind::Bumps);
         let mods = spec.final_mods();
+        if !list.is_empty() && blend.is_none() {
+            blend = Some(Arc::new(NormalBlend::List(list)));
+        }
+        if kind == PatternKind::Average && blend.is_none() {
+            return Err(Diagnostic::error(
+                codes::MISSING_VALUE,
+                c.span,
+                "an `average` normal needs a `normal_map` of the normals it averages",
+            )
+            .with_help("add `normal_map { [1 bumps 0.5] [1 dents 0.5] }` (the values are weights)")
+            .into());
+        }
         Ok(Normal {
             kind,
             mods,
             bump_size: if spec.kind.is_none() { 0.0 } else { bump },
             transform,
             accuracy,
+            blend,
         })
+    }
+
+    /// The `normal { … }` blocks after a list pattern in a normal (`checker
+    /// normal { A } normal { B }`); those not written stay flat.
+    fn list_normals(&mut self, c: &mut Cursor, kw: &str, list: &mut Vec<Normal>) {
+        let max = list_len(kw);
+        list.clear();
+        while list.len() < max {
+            match c.peek() {
+                Some(Tok::Block("normal", Value::Normal(_), _) | Tok::Val(Value::Normal(_), _)) => {
+                    if let Some(
+                        Tok::Block(_, Value::Normal(x), _) | Tok::Val(Value::Normal(x), _),
+                    ) = c.next()
+                    {
+                        list.push((*x).clone());
+                    }
+                    c.comma();
+                }
+                _ => break,
+            }
+        }
+        if !list.is_empty() {
+            let flat = Normal {
+                kind: PatternKind::Bumps,
+                mods: Default::default(),
+                bump_size: 0.0,
+                transform: None,
+                accuracy: None,
+                blend: None,
+            };
+            while list.len() < max {
+                list.push(flat.clone());
+            }
+        }
     }
 
     /// `interior { [Name] ior fade_distance fade_power fade_color caustics dispersion }`.

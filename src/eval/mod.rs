@@ -29,6 +29,7 @@ mod mesh_cache;
 mod modify;
 mod objects;
 mod path_tracing;
+mod pattern_blocks;
 mod patterns;
 mod revolve;
 mod scope;
@@ -218,6 +219,7 @@ pub fn eval_cached(
         open_writes: Vec::new(),
         files_seen: Default::default(),
         deprecated: Default::default(),
+        pending_pattern: None,
     };
     ev.define_command_line();
     ev.run_top(&file.items);
@@ -304,6 +306,9 @@ pub(crate) struct Evaluator<'a> {
         rustc_hash::FxHashMap<crate::syntax::Sym, (ast::Deprecation, std::cell::Cell<bool>)>,
     /// Names ever opened by `#fopen` (closing one twice is allowed).
     pub(crate) files_seen: rustc_hash::FxHashSet<crate::syntax::Sym>,
+    /// The pattern of a pattern block (`pigment_pattern { … }`) just met among a
+    /// pigment's, normal's or texture's items (see `block_pattern_token`).
+    pub(crate) pending_pattern: Option<crate::scene::PatternKind>,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps

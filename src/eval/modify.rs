@@ -28,7 +28,9 @@ fn modifies(kw: &str, first: Option<&Tok>) -> bool {
             MODIFIERS.contains(k) || TRANSFORMS.contains(k) || (kw == "normal" && *k == "bump_size")
         }
         Some(Tok::Block(k, _, _)) => {
-            *k == "transform" || (kw == "pigment" && matches!(*k, "color_map" | "colour_map"))
+            *k == "transform"
+                || (kw == "pigment" && matches!(*k, "color_map" | "colour_map" | "pigment_map"))
+                || (kw == "normal" && matches!(*k, "slope_map" | "normal_map"))
         }
         Some(_) => false,
     }

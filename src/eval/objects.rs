@@ -22,6 +22,7 @@ pub(crate) const OBJECT_MODIFIERS: &[&str] = &[
     "finish",
     "normal",
     "interior",
+    "interior_texture",
     "material",
     "no_shadow",
     "no_image",
@@ -335,13 +336,27 @@ impl Evaluator<'_> {
                 apply_transform(obj, &t);
             }
             Tok::Block(_, Value::Transform(t), _) => apply_transform(obj, &t),
+            Tok::Block("interior_texture", Value::Texture(t), _) => {
+                let inside = attach(obj, (*t).clone());
+                let mut tex = match obj.texture.as_deref() {
+                    Some(t) => t.clone(),
+                    None => (*attach(obj, (*self.default_texture).clone())).clone(),
+                };
+                tex.interior_texture = Some(inside);
+                obj.texture = Some(Arc::new(tex));
+            }
             Tok::Block(_, Value::Texture(t), span) => {
                 let top = attach(obj, (*t).clone());
-                obj.texture = Some(super::materials::layer_texture(
-                    obj.texture.as_ref(),
-                    top,
-                    span,
-                )?);
+                let inside = obj
+                    .texture
+                    .as_ref()
+                    .and_then(|t| t.interior_texture.clone());
+                let mut layered = super::materials::layer_texture(obj.texture.as_ref(), top, span)?;
+                if let Some(inside) = inside {
+                    // A texture written after `interior_texture` keeps it.
+                    Arc::make_mut(&mut layered).interior_texture = Some(inside);
+                }
+                obj.texture = Some(layered);
             }
             Tok::Block(kw @ ("pigment" | "normal" | "finish"), _, span)
                 if obj.texture.as_ref().is_some_and(|t| t.patterned.is_some()) =>

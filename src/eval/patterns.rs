@@ -42,6 +42,10 @@ pub(crate) const PATTERNS: &[&str] = &[
     "mandel",
     "julia",
     "magnet",
+    "pigment_pattern",
+    "image_pattern",
+    "slope",
+    "average",
 ];
 
 /// Pattern modifiers.
@@ -207,6 +211,8 @@ impl Evaluator<'_> {
             "function" => self.take_function_pattern(c)?,
             "planar" | "spherical" | "cylindrical" | "boxed" | "quilted" | "spiral1"
             | "spiral2" | "mandel" | "julia" | "magnet" => self.shape_pattern(kw, c)?,
+            "pigment_pattern" | "image_pattern" | "slope" => self.take_block_pattern(kw, c)?,
+            "average" => PatternKind::Average,
             _ => PatternKind::Dents,
         };
         spec.kind = Some(kind.clone());
@@ -456,18 +462,15 @@ impl Evaluator<'_> {
                     // `[V pigment { … }]`, `[V NAME]`, `[V COLOUR]` or, as POV-Ray
                     // also allows, `[V PIGMENT-BODY]` (`[0.5 checker rgb 1, rgb 0]`).
                     let mut it = items.into_iter().peekable();
-                    let v = match it.next() {
-                        Some(Tok::Val(Value::Float(x), _)) => x,
-                        Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
-                        _ => {
-                            return Err(Diagnostic::error(
-                                codes::MISSING_VALUE,
-                                span,
-                                "a pigment map entry needs a value and a pigment",
-                            )
-                            .with_help("write entries as `[VALUE pigment { … }]`")
-                            .into())
+                    // An `average` map may leave its weights out (1 each).
+                    let v = match it.peek() {
+                        Some(Tok::Val(Value::Float(x), _)) => {
+                            let x = *x;
+                            it.next();
+                            x
                         }
+                        Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
+                        _ => 1.0,
                     };
                     if matches!(it.peek(), Some(Tok::Comma(_))) {
                         it.next();

@@ -169,6 +169,13 @@ pub enum Value {
     PigmentMap(Arc<Vec<(f64, Pigment)>>),
     /// A texture map (entries in the order written).
     TextureMap(crate::scene::TextureMapEntries),
+    /// A normal map (entries in the order written).
+    NormalMap(Arc<Vec<(f64, Normal)>>),
+    /// A slope map: `(value, <height, slope>)` entries in the order written.
+    SlopeMap(Arc<Vec<(f64, glam::DVec2)>>),
+    /// A pattern written as a block (`pigment_pattern { … }`, `image_pattern
+    /// { … }`, `slope { … }`), taken by the pigment, normal or texture it is in.
+    Pattern(Arc<crate::scene::PatternKind>),
     /// A macro.
     Macro(Rc<MacroDef>),
     /// A `spline { }`, called as `S(t)`.
@@ -219,6 +226,9 @@ impl Value {
             Value::Interior(_) => "an interior",
             Value::ColourMap(_) => "a colour map",
             Value::PigmentMap(_) => "a pigment map",
+            Value::NormalMap(_) => "a normal map",
+            Value::SlopeMap(_) => "a slope map",
+            Value::Pattern(_) => "a pattern",
             Value::TextureMap(_) => "a texture map",
             Value::Macro(_) => "a macro",
             Value::Spline(_) => "a spline",

@@ -1350,10 +1350,75 @@ pub const DOCS: &[Doc] = &[
         "warp { turbulence T | repeat D | black_hole C, R | cylindrical | spherical | toroidal | planar … }",
         "Moves the points of a pattern before it is evaluated; several apply in the order written, with the transforms between them.",
     ),
-    later(
+    kw(
         "normal_map",
-        "normal_map { [V normal { … }] … }",
-        "Normals of a pattern by value.",
+        "normal { PATTERN normal_map { [V NORMAL] … } }",
+        "The normals a normal's pattern blends by its value (with `average`: weights).",
+    ),
+    kw(
+        "pigment_pattern",
+        "pigment_pattern { PIGMENT }",
+        "A pattern whose value is the pigment's grey value (0.297 R + 0.589 G + 0.114 B).",
+    ),
+    kw(
+        "image_pattern",
+        "image_pattern { png \"FILE\" [map_type N] [interpolate 2] [once] [use_alpha] }",
+        "A pattern whose value is an image's grey value (or opacity with use_alpha).",
+    ),
+    kw(
+        "slope",
+        "slope { DIRECTION [, LO, HI] [altitude DIRECTION [, LO, HI]] }",
+        "A pattern of how far the surface faces a direction (1 facing it, 0.5 across, 0 away), mixed with the height along `altitude`.",
+    ),
+    kw(
+        "altitude",
+        "slope { DIRECTION altitude DIRECTION [, LO, HI] }",
+        "Mixes the point's height along a direction into the slope pattern.",
+    ),
+    kw(
+        "average",
+        "pigment { average pigment_map { [W P] … } }",
+        "Averages the entries of a pigment, normal or texture map, weighed by their values.",
+    ),
+    kw(
+        "slope_map",
+        "normal { PATTERN slope_map { [V, <HEIGHT, SLOPE>] … } }",
+        "Turns a normal pattern's value into a height profile whose slope tilts the normal.",
+    ),
+    kw(
+        "bump_map",
+        "normal { bump_map { png \"FILE\" [bump_size B] [use_color|use_index] … } }",
+        "Bumps whose heights are an image's grey values (or palette indices).",
+    ),
+    kw(
+        "material_map",
+        "texture { material_map { png \"FILE\" texture { … } … } }",
+        "Textures chosen by an image's palette index at each point.",
+    ),
+    kw(
+        "interior_texture",
+        "object { … interior_texture { … } }",
+        "The texture seen where a ray meets the surface from inside.",
+    ),
+    kw(
+        "use_alpha",
+        "image_pattern { … use_alpha }",
+        "Takes an image pattern's value from the pixels' opacity.",
+    ),
+    kw(
+        "use_color",
+        "bump_map { … use_color }",
+        "Takes heights or values from the pixels' grey value (the default).",
+    ),
+    kw(
+        "use_colour",
+        "bump_map { … use_colour }",
+        "Same as use_color.",
+    ),
+    kw(
+        "use_index",
+        "bump_map { … use_index }",
+        "Takes heights or values from the pixels' palette index.",
     ),
     // ------------------------------------------------------------------ built-in constants
     constant("pi", "pi", "3.14159…"),

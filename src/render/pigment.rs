@@ -4,14 +4,17 @@
 mod fractals;
 mod image_map;
 pub mod noise;
+mod normal_blend;
 pub mod patterns;
 mod shapes;
+pub mod slope;
 pub mod texture_map;
 pub mod warps;
 
+use normal_blend::perturb_blend;
 pub use texture_map::{for_each_plain, plain_at};
 
-use crate::scene::{Colour, Mapped, Normal, Pattern, PatternMap, Pigment};
+use crate::scene::{Colour, Mapped, Normal, Pattern, PatternKind, PatternMap, Pigment};
 use glam::{DMat4, DVec2, DVec3};
 
 /// Added to each coordinate before flooring in `checker`. POV-Ray 3.7 shows the
@@ -59,6 +62,9 @@ fn mapped(m: &Mapped, p: DVec3, uv: Option<DVec2>) -> Colour {
             _ => Colour::BLACK,
         };
     }
+    if m.kind == PatternKind::Average {
+        return average(&m.map, p, uv);
+    }
     let v = patterns::value(&m.kind, p, &m.mods);
     match &m.map {
         PatternMap::Colours(entries) => colour_at(entries, v),
@@ -85,6 +91,44 @@ fn mapped(m: &Mapped, p: DVec3, uv: Option<DVec2>) -> Colour {
         PatternMap::List(l) => l
             .first()
             .map_or(Colour::BLACK, |pig| evaluate_uv(pig, p, uv)),
+    }
+}
+
+/// `average`: the entries of a pigment map (or colour map) averaged, each
+/// weighed by its map value (POV-Ray's weights).
+fn average(map: &PatternMap, p: DVec3, uv: Option<DVec2>) -> Colour {
+    let mut sum = Colour::BLACK;
+    let mut total = 0.0;
+    let mut add = |w: f64, c: Colour| {
+        sum.rgb += c.rgb * w;
+        sum.filter += c.filter * w;
+        sum.transmit += c.transmit * w;
+        total += w;
+    };
+    match map {
+        PatternMap::Pigments(entries) => {
+            for (w, pig) in entries.iter() {
+                add(*w, evaluate_uv(pig, p, uv));
+            }
+        }
+        PatternMap::Colours(entries) => {
+            for (w, c) in entries.iter() {
+                add(*w, *c);
+            }
+        }
+        PatternMap::List(l) => {
+            for pig in l {
+                add(1.0, evaluate_uv(pig, p, uv));
+            }
+        }
+    }
+    if total == 0.0 {
+        return Colour::BLACK;
+    }
+    Colour {
+        rgb: sum.rgb / total,
+        filter: sum.filter / total,
+        transmit: sum.transmit / total,
     }
 }
 
@@ -154,6 +198,9 @@ fn bump_gain(kind: &crate::scene::PatternKind) -> f64 {
 /// texture's space. As in POV-Ray the normal leans against the pattern's slope on
 /// the side the surface is seen from.
 pub fn perturb(normal: &Normal, n: DVec3, p: DVec3, texture_from_world: Option<&DMat4>) -> DVec3 {
+    if let Some(b) = &normal.blend {
+        return perturb_blend(normal, b, n, p, texture_from_world);
+    }
     if normal.bump_size == 0.0 {
         return n;
     }
@@ -187,7 +234,22 @@ pub fn perturb(normal: &Normal, n: DVec3, p: DVec3, texture_from_world: Option<&
     let g = match analytic {
         Some(g) => g,
         None => {
-            let h = normal.accuracy.unwrap_or(1e-4) / scale.max(1e-12);
+            // Patterns of steps (list patterns, a pigment's or an image's
+            // values) are differenced over POV-Ray's default `accuracy` of
+            // 0.02, so their edges show as bevels as in POV-Ray; smooth ones
+            // over a tiny step; `accuracy` sets the step.
+            let step = if let Some(a) = normal.accuracy {
+                a
+            } else if normal.kind.is_list()
+                || matches!(
+                    normal.kind,
+                    PatternKind::PigmentPattern(_) | PatternKind::ImagePattern(_)
+                ) {
+                0.02
+            } else {
+                1e-4
+            };
+            let h = step / scale.max(1e-12);
             let mut g = DVec3::ZERO;
             for (i, axis) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {
                 g[i] = (f(p + axis * h) - f(p - axis * h)) / (2.0 * h);
@@ -333,6 +395,7 @@ mod tests {
                     bump_size: 1.0,
                     transform: Some(Arc::new(tr)),
                     accuracy: None,
+                    blend: None,
                 };
                 for i in 0..50 {
                     let p = DVec3::new(
@@ -395,6 +458,7 @@ mod tests {
             bump_size: 1.0,
             transform: None,
             accuracy: None,
+            blend: None,
         };
         let n = perturb(&nrm, DVec3::Y, DVec3::new(0.3, 0.0, 0.0), None);
         assert!(n.x < 0.0 && (n.length() - 1.0).abs() < 1e-9);

@@ -141,6 +141,14 @@ fn shade(
     weight: f64,
     ctx: &mut TraceCtx,
 ) -> DVec3 {
+    pigment::slope::set_surface_normal(s.normal);
+    // `interior_texture`: seen from inside the surface (the ray leaving
+    // through it), as POV-Ray shades it.
+    if let Some(inside) = &s.texture.interior_texture {
+        if ray.dir.dot(s.geo_normal) > 0.0 {
+            return shade_texture(world, s, inside, ray, level, weight, ctx);
+        }
+    }
     if let Some((blob, local)) = s.blob {
         // A blob's component textures: each shaded with its share of the
         // field at the point, and the colours averaged (as POV-Ray does).
@@ -188,6 +196,18 @@ fn shade_texture(
                 let ca = shade_texture(world, s, a, ray, level, weight * (1.0 - t), ctx);
                 let cb = shade_texture(world, s, b, ray, level, weight * t, ctx);
                 ca * (1.0 - t) + cb * t
+            }
+            pigment::texture_map::Choice::Average(entries) => {
+                let total: f64 = entries.iter().map(|(w, _)| *w).sum();
+                if total == 0.0 {
+                    return DVec3::ZERO;
+                }
+                let mut out = DVec3::ZERO;
+                for (w, t) in entries {
+                    let share = w / total;
+                    out += share * shade_texture(world, s, t, ray, level, weight * share, ctx);
+                }
+                out
             }
         };
     }

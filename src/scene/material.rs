@@ -51,6 +51,9 @@ pub struct Texture {
     /// textures, and this texture's own pigment, normal and finish are unused.
     /// Patterned textures are never layered (`under` is `None`), as in POV-Ray.
     pub patterned: Option<Arc<PatternedTexture>>,
+    /// `interior_texture { … }` of the object: the texture seen where a ray
+    /// meets the surface from inside (`None`: this texture on both sides).
+    pub interior_texture: Option<Arc<Texture>>,
 }
 
 /// A pattern that chooses between whole textures.
@@ -109,6 +112,11 @@ impl Texture {
     /// Appends `t` to the transforms of every pattern of the texture (pigment and
     /// normal), as `translate`/`rotate`/`scale` written after them do.
     pub fn transform_patterns(&mut self, t: &Transform) {
+        if let Some(it) = &mut self.interior_texture {
+            let mut inner = (**it).clone();
+            inner.transform_patterns(t);
+            *it = Arc::new(inner);
+        }
         if let Some(pt) = &mut self.patterned {
             // The transform applies to the whole texture: the pattern and every
             // texture it chooses (POV-Ray's manual; measured: a `scale` written
@@ -284,6 +292,59 @@ pub enum PatternKind {
     Spiral2(f64),
     /// `mandel`, `julia`, `magnet`: escape-time fractals in the x-y plane.
     Fractal(super::Fractal),
+    /// `pigment_pattern { PIGMENT }`: the pigment's grey value
+    /// (0.297 red + 0.589 green + 0.114 blue, as POV-Ray weighs them).
+    PigmentPattern(Arc<Pigment>),
+    /// `image_pattern { … }` (and a `bump_map`'s heights): a value read from an
+    /// image.
+    ImagePattern(Arc<ImagePattern>),
+    /// `average`: the entries of a pigment, normal or texture map averaged by
+    /// their weights (the map values).
+    Average,
+    /// `slope { DIRECTION [, LO, HI] [altitude DIRECTION [, LO, HI]] }`: how
+    /// far the surface normal faces a direction (and how high the point is).
+    Slope(Box<SlopeSpec>),
+    /// `material_map { png "file" texture { … } … }`: the image's palette index
+    /// (or, for images without a palette, its grey value × 255) chooses a texture.
+    MaterialMap(Arc<ImagePattern>),
+}
+
+/// How an `image_pattern`, `bump_map` or `material_map` reads its image.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ImagePattern {
+    /// The image, with its projection (`map_type`, `once`, `interpolate`).
+    pub image: Arc<ImageMap>,
+    /// The palette index of each pixel (row 0 at the top), for palette images.
+    pub indices: Option<Vec<u8>>,
+    /// What the value is made of.
+    pub source: ImageUse,
+}
+
+/// What value an image gives a pattern.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ImageUse {
+    /// The pixel's grey value (`use_color`; for images without a palette, the
+    /// default).
+    Colour,
+    /// The pixel's palette index / 255 (`use_index`, the default for palette
+    /// images).
+    Index,
+    /// The pixel's opacity (`use_alpha`).
+    Alpha,
+}
+
+/// The parameters of the `slope` pattern.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SlopeSpec {
+    /// The direction the normal is compared with (its length weighs it against
+    /// the altitude).
+    pub direction: DVec3,
+    /// The slope values mapped to 0 and 1 (default 0 and 1).
+    pub slope_range: (f64, f64),
+    /// `altitude DIRECTION` (none: slope only).
+    pub altitude: Option<DVec3>,
+    /// The altitudes mapped to 0 and 1 (default 0 and 1).
+    pub altitude_range: (f64, f64),
 }
 
 impl PatternKind {
@@ -291,7 +352,10 @@ impl PatternKind {
     pub fn is_list(&self) -> bool {
         matches!(
             self,
-            PatternKind::Checker | PatternKind::Hexagon | PatternKind::Brick { .. }
+            PatternKind::Checker
+                | PatternKind::Hexagon
+                | PatternKind::Brick { .. }
+                | PatternKind::MaterialMap(_)
         )
     }
 }
@@ -410,6 +474,25 @@ pub struct Normal {
     /// `accuracy`: the step of the slope's differences in pattern units (`None`:
     /// rts's own small step).
     pub accuracy: Option<f64>,
+    /// What the pattern's value selects or shapes, if not bumps of its own
+    /// slope: a `normal_map`, `slope_map`, the normals of a list pattern or an
+    /// `average`.
+    pub blend: Option<Arc<NormalBlend>>,
+}
+
+/// What a normal's pattern blends or shapes.
+#[derive(Clone, Debug, PartialEq)]
+pub enum NormalBlend {
+    /// `normal_map { [v NORMAL] … }`, in the order written (`average`: the
+    /// values are weights).
+    Map(Vec<(f64, Normal)>),
+    /// The normals of a list pattern (`checker normal { A } normal { B }`).
+    List(Vec<Normal>),
+    /// `slope_map { [v, <height, slope>] … }`: the pattern's value gives a
+    /// height profile whose slope tilts the normal.
+    Slopes(Vec<(f64, glam::DVec2)>),
+    /// `bump_map { … }`: the image's values are heights.
+    BumpMap,
 }
 
 /// `reflection { MIN, MAX fresnel falloff metallic }` or `reflection COLOUR`.

@@ -28,6 +28,7 @@ pub use material::{
     TextureMapEntries, Wave,
 };
 pub use media::{Media, Scattering, ScatteringKind};
+pub use material::{ImagePattern, ImageUse, NormalBlend, SlopeSpec};
 pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape, TextData};
 pub use path::{PathTracing, PixelFilter};
 pub use transform::Transform;

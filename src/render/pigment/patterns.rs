@@ -17,6 +17,7 @@ pub fn list_index(kind: &PatternKind, p: DVec3) -> usize {
         PatternKind::Checker => super::checker_index(p),
         PatternKind::Hexagon => hexagon_index(p),
         PatternKind::Brick { size, mortar } => usize::from(!is_mortar(p, *size, *mortar)),
+        PatternKind::MaterialMap(im) => super::image_map::index_at(im, p),
         _ => 0,
     }
 }
@@ -137,7 +138,17 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
         | PatternKind::Spiral2(_)
         | PatternKind::Fractal(_) => super::shapes::raw(kind, p),
         PatternKind::Checker | PatternKind::Hexagon | PatternKind::Brick { .. } => 0.0,
+        PatternKind::PigmentPattern(pig) => grey(super::evaluate(pig, p)),
+        PatternKind::ImagePattern(im) => super::image_map::value_at(im, p),
+        PatternKind::Slope(s) => super::slope::value(s, p),
+        PatternKind::Average | PatternKind::MaterialMap(_) => 0.0,
     }
+}
+
+/// The grey value of a colour as POV-Ray weighs it (its manual's
+/// `pigment_pattern`: 0.297 red + 0.589 green + 0.114 blue).
+pub fn grey(c: crate::scene::Colour) -> f64 {
+    0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z
 }
 
 /// Spread of the `waves` sum around 0.5 (measured contrast of POV-Ray's
@@ -274,12 +285,19 @@ pub fn value(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
         | PatternKind::Ripples
         | PatternKind::Waves
         | PatternKind::Radial
+        | PatternKind::PigmentPattern(_)
+        | PatternKind::ImagePattern(_)
+        | PatternKind::Slope(_)
             if m.frequency == 1.0 && m.phase == 0.0 && m.wave == Wave::Ramp =>
         {
             v.clamp(0.0, 1.0)
         }
         PatternKind::Ripples | PatternKind::Waves => wave(m.wave, v),
         k if super::shapes::is_shape(k) => super::shapes::wave(m.wave, v * m.frequency + m.phase),
+        // A function's value of exactly 1 stays 1 (as POV-Ray 3.7 shows:
+        // `average` of `function { … } color_map { … }` entries that reach 1
+        // shows the map's top colour), other values wrap as gradient's do.
+        PatternKind::Function(_) if m.wave == Wave::Ramp && v * m.frequency + m.phase == 1.0 => 1.0,
         _ => wave(m.wave, v * m.frequency + m.phase),
     }
 }

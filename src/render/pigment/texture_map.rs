@@ -3,8 +3,9 @@
 //! texture_map { … } }`).
 
 use super::patterns;
-use crate::scene::{PatternedTexture, Texture, TextureEntries};
+use crate::scene::{PatternKind, PatternedTexture, Texture, TextureEntries};
 use glam::DVec3;
+use std::sync::Arc;
 
 /// What a patterned texture shows at a point.
 #[derive(Clone, Copy, Debug)]
@@ -14,6 +15,9 @@ pub enum Choice<'a> {
     /// Texture `a` weighted `1 - t` and texture `b` weighted `t`: POV-Ray shades
     /// both and averages the two colours.
     Blend(&'a Texture, &'a Texture, f64),
+    /// `average`: every entry, weighed by its value (the weights need not sum
+    /// to 1); POV-Ray shades each and averages the colours.
+    Average(&'a [(f64, Arc<Texture>)]),
 }
 
 /// Which entries of a map value `v` falls between, as POV-Ray 3.7 looks it up in
@@ -58,6 +62,9 @@ pub fn choose(pt: &PatternedTexture, p: DVec3) -> Choice<'_> {
             let i = patterns::list_index(&pt.kind, patterns::warp(q, &pt.mods));
             Choice::One(&list[i.min(list.len() - 1)])
         }
+        TextureEntries::Map(entries) if pt.kind == PatternKind::Average => {
+            Choice::Average(entries.as_slice())
+        }
         TextureEntries::Map(entries) => {
             let v = patterns::value(&pt.kind, q, &pt.mods);
             match map_lookup(entries, v) {
@@ -88,6 +95,23 @@ pub fn plain_at(tex: &Texture, p: DVec3, u: f64) -> &Texture {
                     a
                 }
             }
+            Choice::Average(entries) => {
+                let total: f64 = entries.iter().map(|(w, _)| w.max(0.0)).sum();
+                let mut chosen = &entries[entries.len() - 1].1;
+                if total > 0.0 {
+                    let mut acc = 0.0;
+                    for (w, t) in entries {
+                        let share = w.max(0.0) / total;
+                        if share > 0.0 && u < acc + share {
+                            u = ((u - acc) / share).clamp(0.0, 1.0);
+                            chosen = t;
+                            break;
+                        }
+                        acc += share;
+                    }
+                }
+                chosen
+            }
         };
     }
     tex
@@ -103,6 +127,14 @@ pub fn for_each_plain(tex: &Texture, p: DVec3, weight: f64, f: &mut impl FnMut(&
             Choice::Blend(a, b, t) => {
                 for_each_plain(a, p, weight * (1.0 - t), f);
                 for_each_plain(b, p, weight * t, f);
+            }
+            Choice::Average(entries) => {
+                let total: f64 = entries.iter().map(|(w, _)| *w).sum();
+                if total != 0.0 {
+                    for (w, t) in entries {
+                        for_each_plain(t, p, weight * w / total, f);
+                    }
+                }
             }
         },
     }
