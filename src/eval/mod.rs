@@ -31,6 +31,7 @@ mod patterns;
 mod revolve;
 mod scope;
 mod shapes;
+mod shapes_more;
 mod spline;
 mod text;
 mod timeline;
