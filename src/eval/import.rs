@@ -168,9 +168,15 @@ impl Evaluator<'_> {
     /// two triangles per cell, as POV-Ray does; solid below the surface.
     pub(crate) fn height_field(&mut self, c: &mut Cursor) -> R<Object> {
         let span = c.span;
-        match c.next() {
-            Some(super::cursor::Tok::Kw("png", _)) => {}
-            other => {
+        match c.peek() {
+            Some(super::cursor::Tok::Kw("png", _)) => {
+                c.next();
+            }
+            // POV-Ray 3.7 also takes the file alone and reads its type from
+            // its extension.
+            Some(super::cursor::Tok::Val(super::value::Value::Str(_), _)) => {}
+            _ => {
+                let other = c.next();
                 let s = other.as_ref().map_or(span, |t| t.span());
                 return Err(Diagnostic::error(
                     codes::MISSING_VALUE,

@@ -130,9 +130,8 @@ impl Evaluator<'_> {
         }
         let mut points = [DVec3::ZERO; 16];
         for (k, p) in points.iter_mut().enumerate() {
-            if k > 0 {
-                c.comma();
-            }
+            // POV-Ray also takes a comma after the last setting.
+            c.comma();
             if !c.value_next() {
                 let whole = c.span;
                 let at = c.peek().map_or(whole, |t| t.span());
@@ -148,7 +147,17 @@ impl Evaluator<'_> {
             *p = self.take_vec3(c, "a control point")?;
         }
         let mut uv = [DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y];
-        if let Some((items, s)) = self.take_list(c, "uv_vectors") {
+        if let Some(Tok::Kw("uv_vectors", _)) = c.peek() {
+            // POV-Ray's form: the keyword and four 2D vectors, no braces.
+            c.next();
+            for (k, slot) in uv.iter_mut().enumerate() {
+                if k > 0 {
+                    c.comma();
+                }
+                let p = self.take_vec3(c, "a corner's uv (4 in all)")?;
+                *slot = DVec2::new(p.x, p.y);
+            }
+        } else if let Some((items, s)) = self.take_list(c, "uv_vectors") {
             if items.len() != 4 {
                 return Err(Diagnostic::error(
                     codes::INVALID_SIZE,
