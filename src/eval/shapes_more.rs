@@ -197,16 +197,6 @@ impl Evaluator<'_> {
         loop {
             let (kw, s) = match c.peek() {
                 Some(Tok::Kw(kw, s)) if JULIA_ITEMS.contains(kw) => (*kw, *s),
-                // `exp`, `sin`, … are function names elsewhere: a call-free use
-                // arrives as a value naming the function.
-                Some(Tok::Val(Value::Str(name), s)) if JuliaFn::from_name(name).is_some() => {
-                    let f = JuliaFn::from_name(name).expect("checked");
-                    let s = *s;
-                    c.next();
-                    j.function = f;
-                    fn_span = Some(s);
-                    continue;
-                }
                 _ => break,
             };
             c.next();
