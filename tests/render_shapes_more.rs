@@ -99,7 +99,7 @@ proptest! {
         s in 0.3..2.0f64,
     ) {
         let tr = Transform::scale(DVec3::splat(s)).then(&Transform::translate(t));
-        let j = world(vec![with_transform(unit_ball_julia(), tr.clone())]);
+        let j = world(vec![with_transform(unit_ball_julia(), tr)]);
         let b = world(vec![with_transform(sphere(DVec3::ZERO, 1.0), tr)]);
         for (o, d) in rays {
             let ray = Ray::new(o, d);

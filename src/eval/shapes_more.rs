@@ -211,7 +211,7 @@ impl Evaluator<'_> {
                     c.once(kw, s)?;
                     let (v, vs) = c.value("the number of iterations")?;
                     let n = self.to_float(&v, vs)?;
-                    if n < 1.0 || n > 1e6 {
+                    if !(1.0..=1e6).contains(&n) {
                         return Err(Diagnostic::error(
                             codes::OUT_OF_RANGE,
                             vs,

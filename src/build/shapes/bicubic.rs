@@ -148,8 +148,8 @@ mod tests {
     #[test]
     fn a_collapsed_corner_still_has_a_normal() {
         let mut p = flat();
-        for k in 0..4 {
-            p[k] = DVec3::new(1.5, 0.0, 0.0);
+        for q in p.iter_mut().take(4) {
+            *q = DVec3::new(1.5, 0.0, 0.0);
         }
         let n = normal(&p, 0.0, 0.5).normalize();
         assert!((n.z.abs() - 1.0).abs() < 1e-6, "{n}");

@@ -477,7 +477,7 @@ impl Julia {
             DVec3::NEG_Z,
         ] {
             if let (Some(e), _, _) = self.orbit(p + d * (4.0 * h)) {
-                k = k.min(e).max(0);
+                k = k.min(e);
             }
         }
         let g = |q: DVec3| self.potential(q, k).max(1e-300).ln();

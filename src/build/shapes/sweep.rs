@@ -332,8 +332,11 @@ impl SphereSweep {
     }
 }
 
+/// A spline rule: the coefficients of one piece from its four values.
+type Rule<'a> = &'a dyn Fn(&dyn Fn(usize) -> f64) -> [f64; 4];
+
 /// The vector coefficients of a spline piece from the scalar rule `k`.
-fn vec_coeffs(w: &[(DVec3, f64)], k: &dyn Fn(&dyn Fn(usize) -> f64) -> [f64; 4]) -> [DVec3; 4] {
+fn vec_coeffs(w: &[(DVec3, f64)], k: Rule) -> [DVec3; 4] {
     let x = k(&|i| w[i].0.x);
     let y = k(&|i| w[i].0.y);
     let z = k(&|i| w[i].0.z);
