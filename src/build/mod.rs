@@ -554,6 +554,8 @@ impl Builder {
                 PrimShape::Superellipsoid(shapes::superellipsoid::Superellipsoid::new(*e, *n))
             }
             Shape::Isosurface(i) => PrimShape::Isosurface(i.clone()),
+            Shape::Julia(j) => PrimShape::Julia(j.clone()),
+            Shape::SphereSweep(s) => PrimShape::SphereSweep(s.clone()),
             Shape::Union { .. } | Shape::Csg { .. } | Shape::Text(_) => empty(),
         };
         (shape, world_from_obj)

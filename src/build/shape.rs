@@ -111,6 +111,10 @@ pub enum PrimShape {
     Superellipsoid(Superellipsoid),
     /// An `isosurface`.
     Isosurface(Arc<super::shapes::isosurface::Isosurface>),
+    /// A `julia_fractal`.
+    Julia(Arc<super::shapes::julia::Julia>),
+    /// A `sphere_sweep`.
+    SphereSweep(Arc<super::shapes::sweep::SphereSweep>),
 }
 
 /// One leaf object after flattening: geometry, placement, resolved texture.
@@ -253,6 +257,8 @@ impl PrimShape {
             PrimShape::Blob(b) => b.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
             PrimShape::Superellipsoid(s) => s.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
             PrimShape::Isosurface(i) => i.nearest(ray, t_min, t_max).map(|(t, sub)| (t, 0, sub)),
+            PrimShape::Julia(j) => j.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
+            PrimShape::SphereSweep(s) => s.nearest(ray, t_min, t_max).map(|t| (t, 0, 0)),
             PrimShape::Frustum(_) | PrimShape::Torus { .. } => {
                 let mut best: Option<ShapeHit> = None;
                 self.hits(ray, t_min, t_max, &mut |t, sub| {
@@ -311,6 +317,14 @@ impl PrimShape {
                 true
             }),
             PrimShape::Isosurface(i) => i.hits(ray, t_min, t_max, false, f),
+            PrimShape::Julia(j) => j.hits(ray, t_min, t_max, &mut |t| {
+                f(t, 0);
+                true
+            }),
+            PrimShape::SphereSweep(s) => s.hits(ray, t_min, t_max, &mut |t| {
+                f(t, 0);
+                true
+            }),
             _ => {
                 if let Some((t, _, sub)) = self.intersect(ray, t_min, t_max) {
                     f(t, sub)
@@ -342,6 +356,8 @@ impl PrimShape {
             PrimShape::Blob(b) => b.normal(p),
             PrimShape::Superellipsoid(s) => s.normal(p),
             PrimShape::Isosurface(i) => i.normal(p, sub),
+            PrimShape::Julia(j) => j.normal(p),
+            PrimShape::SphereSweep(s) => s.normal(p),
         }
     }
 
@@ -397,6 +413,8 @@ impl PrimShape {
             PrimShape::Blob(b) => b.inside(p),
             PrimShape::Superellipsoid(s) => s.inside(p),
             PrimShape::Isosurface(i) => i.inside(p),
+            PrimShape::Julia(j) => j.inside(p),
+            PrimShape::SphereSweep(s) => s.inside(p),
             PrimShape::Triangle { .. }
             | PrimShape::SmoothTriangle(_)
             | PrimShape::Disc { .. }
@@ -438,6 +456,14 @@ impl PrimShape {
             PrimShape::Superellipsoid(s) => s.bounds(),
             PrimShape::Isosurface(i) => {
                 let (lo, hi) = i.container.bounds();
+                Aabb::new(lo, hi)
+            }
+            PrimShape::Julia(j) => {
+                let (lo, hi) = j.bounds();
+                Aabb::new(lo, hi)
+            }
+            PrimShape::SphereSweep(s) => {
+                let (lo, hi) = s.bounds();
                 Aabb::new(lo, hi)
             }
         })

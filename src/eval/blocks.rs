@@ -64,9 +64,6 @@ pub(crate) const BLOCKS: &[&str] = &[
 
 /// POV-Ray blocks that a later release implements.
 const LATER_BLOCKS: &[&str] = &[
-    "julia_fractal",
-    "sphere_sweep",
-    "bicubic_patch",
     "photons",
     "radiosity",
     "light_group",

@@ -168,9 +168,27 @@ impl Evaluator<'_> {
     /// two triangles per cell, as POV-Ray does; solid below the surface.
     pub(crate) fn height_field(&mut self, c: &mut Cursor) -> R<Object> {
         let span = c.span;
-        match c.next() {
-            Some(super::cursor::Tok::Kw("png", _)) => {}
-            other => {
+        let (grid, w, h) =
+            if let Some(super::cursor::Tok::Val(super::value::Value::Float(_), _)) = c.peek() {
+                self.height_field_function(c)?
+            } else {
+                self.height_field_image(c)?
+            };
+        self.height_field_mesh(c, span, &grid, w, h)
+    }
+
+    /// The heights of `png "NAME"` or `"NAME"`: grey levels, rows top first.
+    fn height_field_image(&mut self, c: &mut Cursor) -> R<(Vec<f32>, usize, usize)> {
+        let span = c.span;
+        match c.peek() {
+            Some(super::cursor::Tok::Kw("png", _)) => {
+                c.next();
+            }
+            // POV-Ray 3.7 also takes the file alone and reads its type from
+            // its extension.
+            Some(super::cursor::Tok::Val(super::value::Value::Str(_), _)) => {}
+            _ => {
+                let other = c.next();
                 let s = other.as_ref().map_or(span, |t| t.span());
                 return Err(Diagnostic::error(
                     codes::MISSING_VALUE,
@@ -207,6 +225,25 @@ impl Evaluator<'_> {
             )
             .into());
         }
+        let mut grid = Vec::with_capacity(w * h);
+        for j in 0..h {
+            for i in 0..w {
+                grid.push(grey.get_pixel(i as u32, j as u32)[0] as f32 / 65536.0);
+            }
+        }
+        Ok((grid, w, h))
+    }
+
+    /// The triangles of a height field of `w × h` heights (rows top first) and
+    /// its `smooth` and `water_level` items.
+    fn height_field_mesh(
+        &mut self,
+        c: &mut Cursor,
+        span: crate::span::Span,
+        grid: &[f32],
+        w: usize,
+        h: usize,
+    ) -> R<Object> {
         let mut smooth = false;
         let mut water = 0.0f64;
         loop {
@@ -223,7 +260,7 @@ impl Evaluator<'_> {
             }
         }
         // POV-Ray: column i → x = i / (w - 1); row j (top first) → z = 1 - j / (h - 1).
-        let height = |i: usize, j: usize| grey.get_pixel(i as u32, j as u32)[0] as f32 / 65536.0;
+        let height = |i: usize, j: usize| grid[j * w + i];
         let mut m = MeshData::default();
         for j in 0..h {
             for i in 0..w {

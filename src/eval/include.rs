@@ -22,6 +22,7 @@ pub const STDLIB: &[(&str, &str)] = &[
     ("rand.inc", include_str!("../stdlib/rand.inc")),
     ("shapes.inc", include_str!("../stdlib/shapes.inc")),
     ("shapes2.inc", include_str!("../stdlib/shapes2.inc")),
+    ("shapes_old.inc", include_str!("../stdlib/shapes_old.inc")),
     ("skies.inc", include_str!("../stdlib/skies.inc")),
     ("stdinc.inc", include_str!("../stdlib/stdinc.inc")),
     ("stones.inc", include_str!("../stdlib/stones.inc")),

@@ -34,6 +34,7 @@ mod patterns;
 mod revolve;
 mod scope;
 mod shapes;
+mod shapes_more;
 mod spline;
 mod text;
 mod timeline;

@@ -70,6 +70,9 @@ pub(crate) const OBJECT_BLOCKS: &[&str] = &[
     "intersection",
     "difference",
     "isosurface",
+    "bicubic_patch",
+    "julia_fractal",
+    "sphere_sweep",
 ];
 
 impl Evaluator<'_> {
@@ -80,6 +83,10 @@ impl Evaluator<'_> {
             return self.blob(c);
         }
         if let Some(mut o) = self.new_shape(c)? {
+            self.modifiers(&mut o, c, false);
+            return Ok(o);
+        }
+        if let Some(mut o) = self.more_shape(c)? {
             self.modifiers(&mut o, c, false);
             return Ok(o);
         }

@@ -24,6 +24,9 @@ impl Evaluator<'_> {
             match t {
                 Tok::Comma(_) => {}
                 Tok::Val(v, _) | Tok::Block(_, v, _) => elems.push(Some(v)),
+                // `bounded_by { clipped_by }`: bound by the clipping objects
+                // (rts bounds every object itself, so nothing to keep).
+                Tok::Kw("clipped_by", _) if c.block == "bounded_by" => {}
                 other => {
                     let valid: &[&str] = match c.block {
                         "clipped_by" | "bounded_by" => &["an object"],

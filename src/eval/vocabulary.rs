@@ -14,6 +14,7 @@ use super::objects::{OBJECT_MODIFIERS, TRANSFORMS};
 /// Blocks that stand at top level: objects, camera, lights and scene settings.
 pub const TOP_LEVEL_KEYWORDS: &[&str] = &[
     "background",
+    "bicubic_patch",
     "box",
     "camera",
     "cone",
@@ -25,6 +26,7 @@ pub const TOP_LEVEL_KEYWORDS: &[&str] = &[
     "global_settings",
     "height_field",
     "intersection",
+    "julia_fractal",
     "light_source",
     "merge",
     "mesh",
@@ -39,6 +41,7 @@ pub const TOP_LEVEL_KEYWORDS: &[&str] = &[
     "sky_sphere",
     "smooth_triangle",
     "sphere",
+    "sphere_sweep",
     "text",
     "torus",
     "triangle",
@@ -48,6 +51,7 @@ pub const TOP_LEVEL_KEYWORDS: &[&str] = &[
 /// Object blocks (shapes and CSG), which take [`OBJECT_MODIFIERS`] after their
 /// parameters.
 const OBJECTS: &[&str] = &[
+    "bicubic_patch",
     "box",
     "cone",
     "cubic",
@@ -56,6 +60,7 @@ const OBJECTS: &[&str] = &[
     "disc",
     "height_field",
     "intersection",
+    "julia_fractal",
     "merge",
     "mesh",
     "mesh2",
@@ -68,6 +73,7 @@ const OBJECTS: &[&str] = &[
     "quartic",
     "smooth_triangle",
     "sphere",
+    "sphere_sweep",
     "text",
     "torus",
     "triangle",
@@ -117,6 +123,13 @@ pub fn block_keywords(block: &str) -> Option<Vec<&'static str>> {
         }
         "height_field" => vec!["png", "smooth", "water_level"],
         "text" => super::text::TEXT_ITEMS.to_vec(),
+        "bicubic_patch" => {
+            let mut v = super::shapes_more::PATCH_ITEMS.to_vec();
+            v.push("uv_vectors");
+            v
+        }
+        "julia_fractal" => super::shapes_more::JULIA_ITEMS.to_vec(),
+        "sphere_sweep" => super::shapes_more::SWEEP_ITEMS.to_vec(),
         "clipped_by" | "bounded_by" => OBJECTS.to_vec(),
         "union" | "merge" | "intersection" | "difference" => OBJECTS.to_vec(),
         "looks_like" => OBJECTS.to_vec(),

@@ -227,6 +227,10 @@ pub enum Shape {
     },
     /// `isosurface { function { … } contained_by { … } … }`.
     Isosurface(Arc<crate::build::shapes::isosurface::Isosurface>),
+    /// `julia_fractal { <c> … }`: a slice of a 4D Julia set.
+    Julia(Arc<crate::build::shapes::julia::Julia>),
+    /// `sphere_sweep { SPLINE N, <p>, r … }`.
+    SphereSweep(Arc<crate::build::shapes::sweep::SphereSweep>),
     /// `merge`, `intersection` or `difference` (a `union` is [`Shape::Union`]).
     Csg {
         /// Which operation.

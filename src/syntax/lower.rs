@@ -32,10 +32,38 @@ impl Lowerer {
 
     /// Lowers the children of `file`/`one_item`/`body`-like pairs into items.
     pub fn items(&mut self, pairs: Pairs<Rule>) -> Vec<Item> {
-        pairs
-            .filter(|p| p.as_rule() != Rule::EOI)
-            .map(|p| self.item(p))
-            .collect()
+        let mut out = Vec::new();
+        for p in pairs.filter(|p| p.as_rule() != Rule::EOI) {
+            if p.as_rule() == Rule::sized_fn {
+                self.sized_fn(p, &mut out);
+            } else {
+                out.push(self.item(p));
+            }
+        }
+        out
+    }
+
+    /// `function W, H { … }` as the items `W`, `,`, `H` and the block.
+    fn sized_fn(&mut self, p: P, out: &mut Vec<Item>) {
+        let span = self.span(&p);
+        let mut inner = p.into_inner();
+        let keyword = self.keyword(inner.next().expect("function keyword"));
+        let w = inner.next().expect("width");
+        out.push(Item::Expr(Box::new(self.expr(w))));
+        let comma = inner.next().expect("comma");
+        out.push(Item::Comma(self.span(&comma)));
+        let h = inner.next().expect("height");
+        out.push(Item::Expr(Box::new(self.expr(h))));
+        let items = self.items(inner);
+        out.push(Item::Block(Box::new(Block {
+            span: Span {
+                start: keyword.span.start,
+                ..span
+            },
+            keyword,
+            items,
+            params: None,
+        })));
     }
 
     fn item(&mut self, p: P) -> Item {

@@ -225,6 +225,11 @@ mod tests {
         ok("plane { y, 0 translate -x rotate <0, 30, 0> }");
         ok("/* a /* nested */ comment */ #declare S = \"a\\\"b\\n\";");
         ok("#declare C = A ? 1 : B ? 2 : 3;");
+        let f = ok("height_field { function 4, 3 { x } }");
+        let ast::Item::Block(b) = &f.items[0] else {
+            panic!("a block")
+        };
+        assert_eq!(b.items.len(), 4, "{:#?}", b.items);
     }
 
     #[test]

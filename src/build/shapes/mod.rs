@@ -1,9 +1,11 @@
 //! Ray intersection, normals and inside tests of each kind of shape, in the
 //! shape's own space. One file per family; [`super::PrimShape`] dispatches.
 
+pub mod bicubic;
 pub mod blob;
 pub mod flat;
 pub mod isosurface;
+pub mod julia;
 pub mod lathe;
 pub mod poly;
 pub mod prism;
@@ -13,6 +15,7 @@ pub mod solid;
 pub mod sor;
 pub mod superellipsoid;
 pub mod surface;
+pub mod sweep;
 pub mod text;
 pub mod torus;
 
