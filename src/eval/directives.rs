@@ -5,7 +5,9 @@ use super::value::Value;
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
 use crate::span::Span;
-use crate::syntax::ast::{CaseTest, Directive, DirectiveKind, Item, LValue, MessageKind, Rhs};
+use crate::syntax::ast::{
+    Case, CaseTest, Directive, DirectiveKind, Expr, Item, LValue, MessageKind, Rhs,
+};
 use std::rc::Rc;
 use std::sync::Arc;
 
@@ -92,28 +94,7 @@ impl Evaluator<'_> {
                 cases,
                 otherwise,
             } => {
-                let v = self.expr(value)?;
-                let x = self.to_float(&v, value.span)?;
-                let mut start = None;
-                for (i, c) in cases.iter().enumerate() {
-                    let hit = match &c.test {
-                        CaseTest::Case(e) => {
-                            let cv = self.expr(e)?;
-                            (self.to_float(&cv, e.span)? - x).abs() < 1e-10
-                        }
-                        CaseTest::Range(a, b) => {
-                            let av = self.expr(a)?;
-                            let bv = self.expr(b)?;
-                            let (lo, hi) =
-                                (self.to_float(&av, a.span)?, self.to_float(&bv, b.span)?);
-                            lo <= x && x <= hi
-                        }
-                    };
-                    if hit {
-                        start = Some(i);
-                        break;
-                    }
-                }
+                let start = self.switch_start(value, cases)?;
                 match start {
                     Some(i) => {
                         // Without #break a clause falls through into the next, as in POV-Ray.
@@ -310,6 +291,30 @@ impl Evaluator<'_> {
         }
     }
 
+    /// The first `#case`/`#range` clause of a `#switch` that matches its value.
+    fn switch_start(&mut self, value: &Expr, cases: &[Case]) -> R<Option<usize>> {
+        let v = self.expr(value)?;
+        let x = self.to_float(&v, value.span)?;
+        for (i, c) in cases.iter().enumerate() {
+            let hit = match &c.test {
+                CaseTest::Case(e) => {
+                    let cv = self.expr(e)?;
+                    (self.to_float(&cv, e.span)? - x).abs() < 1e-10
+                }
+                CaseTest::Range(a, b) => {
+                    let av = self.expr(a)?;
+                    let bv = self.expr(b)?;
+                    let (lo, hi) = (self.to_float(&av, a.span)?, self.to_float(&bv, b.span)?);
+                    lo <= x && x <= hi
+                }
+            };
+            if hit {
+                return Ok(Some(i));
+            }
+        }
+        Ok(None)
+    }
+
     /// The items of the branches a conditional directive (`#if`, `#ifdef`,
     /// `#switch`) chooses now, without running them: where the items are compiled
     /// rather than evaluated (a function's body), as POV-Ray chooses while parsing.
@@ -346,38 +351,12 @@ impl Evaluator<'_> {
                     out.extend(otherwise.iter().flatten().cloned());
                 }
             }
-            DirectiveKind::Switch { .. } => {
-                // Run the switch on a token-free copy: choose by the same rules.
-                let DirectiveKind::Switch {
-                    value,
-                    cases,
-                    otherwise,
-                } = &d.kind
-                else {
-                    unreachable!()
-                };
-                let v = self.expr(value)?;
-                let x = self.to_float(&v, value.span)?;
-                let mut start = None;
-                for (i, c) in cases.iter().enumerate() {
-                    let hit = match &c.test {
-                        CaseTest::Case(e) => {
-                            let cv = self.expr(e)?;
-                            (self.to_float(&cv, e.span)? - x).abs() < 1e-10
-                        }
-                        CaseTest::Range(a, b) => {
-                            let av = self.expr(a)?;
-                            let bv = self.expr(b)?;
-                            let (lo, hi) =
-                                (self.to_float(&av, a.span)?, self.to_float(&bv, b.span)?);
-                            lo <= x && x <= hi
-                        }
-                    };
-                    if hit {
-                        start = Some(i);
-                        break;
-                    }
-                }
+            DirectiveKind::Switch {
+                value,
+                cases,
+                otherwise,
+            } => {
+                let start = self.switch_start(value, cases)?;
                 match start {
                     Some(i) => {
                         for c in &cases[i..] {

@@ -244,7 +244,8 @@ pub fn perturb(normal: &Normal, n: DVec3, p: DVec3, texture_from_world: Option<&
                 || matches!(
                     normal.kind,
                     PatternKind::PigmentPattern(_) | PatternKind::ImagePattern(_)
-                ) {
+                )
+            {
                 0.02
             } else {
                 1e-4

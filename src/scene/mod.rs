@@ -27,8 +27,8 @@ pub use material::{
     PatternMap, PatternMods, PatternedTexture, Pigment, Reflection, Texture, TextureEntries,
     TextureMapEntries, Wave,
 };
-pub use media::{Media, Scattering, ScatteringKind};
 pub use material::{ImagePattern, ImageUse, NormalBlend, SlopeSpec};
+pub use media::{Media, Scattering, ScatteringKind};
 pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape, TextData};
 pub use path::{PathTracing, PixelFilter};
 pub use transform::Transform;
