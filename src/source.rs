@@ -132,4 +132,36 @@ impl FileAccess {
             .chain(self.allowed.iter().filter_map(|p| canon(p)))
             .any(|dir| path.starts_with(dir))
     }
+
+    /// Whether `name`, found in search folder `dir` and resolving to `canon`, may be
+    /// read: as [`Self::permits`], or when `dir` is a folder the user named (`-I`,
+    /// `--allow-path`) and `name` stays inside it as written (no `..`): links in a
+    /// folder the user chose are followed (POV-Ray's include folder links its fonts
+    /// from elsewhere), while links in the scene's own folder are not.
+    pub fn permits_in(
+        &self,
+        dir: &Path,
+        name: &str,
+        canon: &Path,
+        scene_dir: Option<&Path>,
+    ) -> bool {
+        if self.permits(canon, scene_dir) {
+            return true;
+        }
+        let plain = Path::new(name).is_relative()
+            && Path::new(name).components().all(|c| {
+                matches!(
+                    c,
+                    std::path::Component::Normal(_) | std::path::Component::CurDir
+                )
+            });
+        let canon_dir = dir.canonicalize().ok();
+        plain
+            && canon_dir.is_some()
+            && self
+                .include_dirs
+                .iter()
+                .chain(&self.allowed)
+                .any(|d| d.canonicalize().ok() == canon_dir)
+    }
 }

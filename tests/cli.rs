@@ -487,3 +487,49 @@ fn render_writes_files_and_check_does_not() {
         [65, 0xff, 0xfe]
     );
 }
+
+/// Links in a folder the user names with -I are followed (POV-Ray's include folder
+/// links its fonts from elsewhere); links in the scene's own folder are not.
+#[cfg(unix)]
+#[test]
+fn links_are_followed_in_include_folders_only() {
+    let root = std::env::temp_dir().join(format!("rts-links-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&root);
+    for d in ["scene", "lib", "elsewhere"] {
+        std::fs::create_dir_all(root.join(d)).unwrap();
+    }
+    std::fs::write(root.join("elsewhere/target.inc"), "#declare Linked = 1;\n").unwrap();
+    std::os::unix::fs::symlink(
+        root.join("elsewhere/target.inc"),
+        root.join("lib/linked.inc"),
+    )
+    .unwrap();
+    std::os::unix::fs::symlink(
+        root.join("elsewhere/target.inc"),
+        root.join("scene/own.inc"),
+    )
+    .unwrap();
+    let scene = root.join("scene/a.rts");
+    std::fs::write(
+        &scene,
+        "#include \"linked.inc\"\n#if (Linked) sphere { 0, 1 } #end\n",
+    )
+    .unwrap();
+    let lib = root.join("lib");
+    let (code, out, err) = rts(&[
+        "check",
+        scene.to_str().unwrap(),
+        "-I",
+        lib.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{out}{err}");
+    std::fs::write(&scene, "#include \"own.inc\"\nsphere { 0, 1 }\n").unwrap();
+    let (code, out, _) = rts(&[
+        "check",
+        scene.to_str().unwrap(),
+        "--message-format",
+        "short",
+    ]);
+    assert_eq!(code, 1);
+    assert!(out.contains("rts::io::file_not_allowed"), "{out}");
+}

@@ -71,7 +71,9 @@ pub fn find_include(
         let path = dir.join(name);
         if path.is_file() {
             let canon = path.canonicalize().unwrap_or(path);
-            return access.permits(&canon, scene_dir).then_some(canon);
+            return access
+                .permits_in(&dir, name, &canon, scene_dir)
+                .then_some(canon);
         }
     }
     STDLIB
@@ -204,7 +206,7 @@ impl Evaluator<'_> {
             if !self
                 .options
                 .access
-                .permits(&canon, self.scene_dir.as_deref())
+                .permits_in(dir, name, &canon, self.scene_dir.as_deref())
             {
                 return Err(Diagnostic::error(
                     codes::FILE_NOT_ALLOWED,
