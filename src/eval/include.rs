@@ -13,6 +13,7 @@ pub const STDLIB: &[(&str, &str)] = &[
     ("arrays.inc", include_str!("../stdlib/arrays.inc")),
     ("colors.inc", include_str!("../stdlib/colors.inc")),
     ("consts.inc", include_str!("../stdlib/consts.inc")),
+    ("debug.inc", include_str!("../stdlib/debug.inc")),
     ("finish.inc", include_str!("../stdlib/finish.inc")),
     ("functions.inc", include_str!("../stdlib/functions.inc")),
     ("glass.inc", include_str!("../stdlib/glass.inc")),
@@ -130,6 +131,14 @@ impl Evaluator<'_> {
             .into());
         }
         let id = self.resolve(name, span)?;
+        // debug.inc's Debug_Inc_Stack(): every include says which file it reads.
+        let tracking = crate::syntax::intern::intern("Debug_Inc_Stack_On");
+        if let Some(super::value::Value::Float(f)) = self.scope.get(tracking).map(|b| &b.value) {
+            if *f != 0.0 {
+                let d = Diagnostic::note(codes::USER_DEBUG, dspan, format!("including {name}"));
+                self.warn(d);
+            }
+        }
         if let Some(pos) = self.include_stack.iter().position(|f| *f == id) {
             let chain: Vec<String> = self.include_stack[pos..]
                 .iter()
