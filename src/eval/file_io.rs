@@ -84,43 +84,36 @@ impl Evaluator<'_> {
         let v = self.expr(file)?;
         let fname = self.to_str(&v, file.span)?;
         self.files_seen.insert(name);
-        let state = match mode {
+        let (path, state) = match mode {
             OpenMode::Read => {
                 let (path, data) = self.read_whole(&fname, file.span)?;
-                let f = OpenFile {
-                    path,
-                    shown: fname.to_string(),
-                    state: FileState::Read { data, pos: 0 },
-                };
-                let f = Rc::new(RefCell::new(f));
-                self.scope.declare(name, Value::File(f.clone()), name_span);
-                // An empty file is at its end at once.
-                if at_end(&f.borrow()) {
-                    f.borrow_mut().state = FileState::Closed;
-                    self.scope.undef(name);
-                }
-                return Ok(());
+                (path, FileState::Read { data, pos: 0 })
             }
-            OpenMode::Write | OpenMode::Append => {
+            OpenMode::Write => (
+                self.write_path(&fname, file.span)?,
+                FileState::Write { buf: Vec::new() },
+            ),
+            OpenMode::Append => {
                 let path = self.write_path(&fname, file.span)?;
-                let buf = if mode == OpenMode::Append {
-                    match self.written.get(&path) {
-                        Some(d) => d.to_vec(),
-                        None => std::fs::read(&path).unwrap_or_default(),
-                    }
-                } else {
-                    Vec::new()
+                let buf = match self.written.get(&path) {
+                    Some(d) => d.to_vec(),
+                    None => std::fs::read(&path).unwrap_or_default(),
                 };
                 (path, FileState::Write { buf })
             }
         };
         let f = Rc::new(RefCell::new(OpenFile {
-            path: state.0,
+            path,
             shown: fname.to_string(),
-            state: state.1,
+            state,
         }));
-        self.open_writes.push(f.clone());
-        self.scope.declare(name, Value::File(f), name_span);
+        self.scope.declare(name, Value::File(f.clone()), name_span);
+        if mode == OpenMode::Read {
+            // An empty file is at its end at once.
+            self.close_at_end(name, &f);
+        } else {
+            self.open_writes.push(f);
+        }
         Ok(())
     }
 
@@ -174,10 +167,7 @@ impl Evaluator<'_> {
             };
             self.bind(false, t, item, t.name_span)?;
         }
-        if at_end(&f.borrow()) {
-            f.borrow_mut().state = FileState::Closed;
-            self.scope.undef(name);
-        }
+        self.close_at_end(name, &f);
         Ok(())
     }
 
@@ -242,6 +232,15 @@ impl Evaluator<'_> {
         }
         buf.extend_from_slice(&out);
         Ok(())
+    }
+
+    /// When only blanks and commas are left of a file being read, closes it and
+    /// undefines its name (so `#while (defined(NAME))` ends), as POV-Ray does.
+    fn close_at_end(&mut self, name: Sym, f: &Rc<RefCell<OpenFile>>) {
+        if at_end(&f.borrow()) {
+            f.borrow_mut().state = FileState::Closed;
+            self.scope.undef(name);
+        }
     }
 
     /// Closes every file still open for writing (at the end of the scene).
@@ -353,13 +352,17 @@ impl Evaluator<'_> {
     /// folder; the folder must exist and lie where the scene may write (its own
     /// folder and `--allow-path` folders, or anywhere with `--allow-any-path`).
     fn write_path(&self, name: &str, span: Span) -> R<PathBuf> {
-        let base = self.scene_dir.clone().unwrap_or_else(|| PathBuf::from("."));
-        let base = if base.as_os_str().is_empty() {
-            PathBuf::from(".")
-        } else {
-            base
-        };
-        let Some(path) = overlay_key(&base, name) else {
+        // The scene's folder ("." for a scene named without a folder); a scene with
+        // no file (an unsaved editor buffer) may write only to --allow-path folders.
+        let scene_base = self.scene_dir.as_deref().map(|d| {
+            if d.as_os_str().is_empty() {
+                Path::new(".")
+            } else {
+                d
+            }
+        });
+        let base = scene_base.unwrap_or(Path::new("."));
+        let Some(path) = overlay_key(base, name) else {
             let p = base.join(name);
             let folder = p
                 .parent()
@@ -376,16 +379,7 @@ impl Evaluator<'_> {
         let access = &self.options.access;
         let canon = |p: &Path| p.canonicalize().ok();
         let permitted = access.unrestricted
-            || self
-                .scene_dir
-                .as_deref()
-                .map(|d| {
-                    if d.as_os_str().is_empty() {
-                        Path::new(".")
-                    } else {
-                        d
-                    }
-                })
+            || scene_base
                 .into_iter()
                 .filter_map(canon)
                 .chain(access.allowed.iter().filter_map(|p| canon(p)))

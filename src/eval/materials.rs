@@ -2,6 +2,7 @@
 
 use super::cursor::{Cursor, Tok};
 use super::objects::TRANSFORMS;
+use super::patterns::map_entry_value;
 use super::patterns::PatternSpec;
 use super::patterns::{default_map, MODIFIERS, PATTERNS};
 use super::value::Value;
@@ -644,30 +645,7 @@ impl Evaluator<'_> {
         while let Some(tok) = c.next() {
             match tok {
                 Tok::Bracket(items, span) => {
-                    let mut it = items.into_iter().peekable();
-                    // An `average` map may leave its weights out (1 each).
-                    let v = match it.peek() {
-                        Some(Tok::Val(Value::Float(x), _)) => {
-                            let x = *x;
-                            it.next();
-                            x
-                        }
-                        Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
-                        None => {
-                            return Err(Diagnostic::error(
-                                codes::MISSING_VALUE,
-                                span,
-                                "a texture map entry needs a value and a texture",
-                            )
-                            .with_help(help)
-                            .into())
-                        }
-                        _ => 1.0,
-                    };
-                    if matches!(it.peek(), Some(Tok::Comma(_))) {
-                        it.next();
-                    }
-                    let rest: Vec<Tok> = it.collect();
+                    let (v, rest) = map_entry_value(items)?;
                     let tex = match rest.as_slice() {
                         // rts also takes `[V texture { … }]` (POV-Ray 3.7 does not), as
                         // it takes `[V pigment { … }]` in a pigment_map.

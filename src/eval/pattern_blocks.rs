@@ -3,6 +3,7 @@
 //! `bump_map` and `material_map`.
 
 use super::cursor::{Cursor, Tok};
+use super::patterns::map_entry_value;
 use super::value::Value;
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
@@ -362,30 +363,7 @@ impl Evaluator<'_> {
         while let Some(tok) = c.next() {
             match tok {
                 Tok::Bracket(items, span) => {
-                    let mut it = items.into_iter().peekable();
-                    // An `average` map may leave its weights out (1 each).
-                    let v = match it.peek() {
-                        Some(Tok::Val(Value::Float(x), _)) => {
-                            let x = *x;
-                            it.next();
-                            x
-                        }
-                        Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
-                        None => {
-                            return Err(Diagnostic::error(
-                                codes::MISSING_VALUE,
-                                span,
-                                "a normal map entry needs a value and a normal",
-                            )
-                            .with_help(help)
-                            .into())
-                        }
-                        _ => 1.0,
-                    };
-                    if matches!(it.peek(), Some(Tok::Comma(_))) {
-                        it.next();
-                    }
-                    let rest: Vec<Tok> = it.collect();
+                    let (v, rest) = map_entry_value(items)?;
                     let n = match rest.as_slice() {
                         [Tok::Block("normal", Value::Normal(n), _)] => (**n).clone(),
                         [] => {

@@ -447,7 +447,30 @@ impl Evaluator<'_> {
         entries.sort_by(|a, b| a.0.total_cmp(&b.0));
         Ok(entries)
     }
+}
 
+/// Splits a map entry `[V ITEM]` into its value and the tokens of its item (a comma
+/// after the value is dropped). As `average` maps allow, the value may be left
+/// out: it is then 1. An empty entry gives 1 and no tokens, for the caller to
+/// report with the map's own words.
+pub(crate) fn map_entry_value(items: Vec<Tok>) -> R<(f64, Vec<Tok>)> {
+    let mut it = items.into_iter().peekable();
+    let v = match it.peek() {
+        Some(Tok::Val(Value::Float(x), _)) => {
+            let x = *x;
+            it.next();
+            x
+        }
+        Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
+        _ => 1.0,
+    };
+    if matches!(it.peek(), Some(Tok::Comma(_))) {
+        it.next();
+    }
+    Ok((v, it.collect()))
+}
+
+impl Evaluator<'_> {
     /// `pigment_map { [v PIGMENT] … }`.
     pub(crate) fn pigment_map(&mut self, c: &mut Cursor) -> R<Vec<(f64, Pigment)>> {
         let mut entries: Vec<(f64, Pigment)> = Vec::new();
@@ -461,21 +484,7 @@ impl Evaluator<'_> {
                 Tok::Bracket(items, span) => {
                     // `[V pigment { … }]`, `[V NAME]`, `[V COLOUR]` or, as POV-Ray
                     // also allows, `[V PIGMENT-BODY]` (`[0.5 checker rgb 1, rgb 0]`).
-                    let mut it = items.into_iter().peekable();
-                    // An `average` map may leave its weights out (1 each).
-                    let v = match it.peek() {
-                        Some(Tok::Val(Value::Float(x), _)) => {
-                            let x = *x;
-                            it.next();
-                            x
-                        }
-                        Some(Tok::Val(Value::Poison, _)) => return Err(Fail::silent()),
-                        _ => 1.0,
-                    };
-                    if matches!(it.peek(), Some(Tok::Comma(_))) {
-                        it.next();
-                    }
-                    let rest: Vec<Tok> = it.collect();
+                    let (v, rest) = map_entry_value(items)?;
                     let pig = match rest.as_slice() {
                         [Tok::Block(_, Value::Pigment(p), _)] => (**p).clone(),
                         [] => {
