@@ -56,6 +56,34 @@ fn filter_and_transmit_let_light_through() {
 }
 
 #[test]
+fn transmit_above_one_amplifies_the_light_behind() {
+    // POV-Ray does not clamp the opacity 1 − filter − transmit: a sheet of rgb
+    // 0.5 with transmit 2 in front of a 0.3 backdrop gives 2·0.3 − 0.5·1 = 0.1
+    // (measured with POV-Ray 3.7; advanced/bwstripe.pov's threshold lens).
+    // A disc is one surface, so the light crosses it once.
+    let scene = format!(
+        "{CAMERA}plane {{ z, 5 pigment {{ rgb 0.3 }} finish {{ ambient 1 diffuse 0 }} }}\n\
+         disc {{ <0, 0, -1>, z, 5 pigment {{ rgbt <0.5, 0.5, 0.5, 2> }} finish {{ ambient 1 diffuse 0 }} }}\n"
+    );
+    let (w, px) = render("transmit_above_one", &scene, 4, 4);
+    let c = px[(2 * w + 2) as usize];
+    assert!(close(c, [0.1, 0.1, 0.1], 2e-3), "{c:?}");
+}
+
+#[test]
+fn quick_color_keeps_the_pigment_in_force() {
+    // `pigment { quick_color … }` inside a texture only sets the preview colour
+    // (advanced/chess2.pov): the declared texture's pigment stays.
+    let scene = format!(
+        "{CAMERA}#declare T = texture {{ pigment {{ rgb <0, 1, 0> }} finish {{ ambient 1 diffuse 0 }} }}\n\
+         plane {{ z, 0 texture {{ T pigment {{ quick_color rgb <1, 0, 0> }} }} }}\n"
+    );
+    let (w, px) = render("quick_color", &scene, 4, 4);
+    let c = px[(2 * w + 2) as usize];
+    assert!(close(c, [0.0, 1.0, 0.0], 1e-3), "{c:?}");
+}
+
+#[test]
 fn shadows_through_filtering_surfaces_are_coloured() {
     // A floor lit straight from above through a green filter sheet.
     let scene = "global_settings { assumed_gamma 1.0 }\n\

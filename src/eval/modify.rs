@@ -8,7 +8,7 @@
 
 use super::cursor::{Cursor, Deferred, Sink, Tok};
 use super::objects::TRANSFORMS;
-use super::patterns::MODIFIERS;
+use super::patterns::{MODIFIERS, PATTERNS};
 use super::value::Value;
 use super::Evaluator;
 use std::sync::Arc;
@@ -17,7 +17,8 @@ use std::sync::Arc;
 /// (rather than replacing it): it starts with a modifier or a transform, or is
 /// empty. A block that starts with a pattern, a colour or a declared name says
 /// what it is by itself.
-fn modifies(kw: &str, first: Option<&Tok>) -> bool {
+fn modifies(kw: &str, toks: &[Tok]) -> bool {
+    let first = toks.first();
     if kw == "finish" {
         // Every finish item is a modifier: only a declared finish starts afresh.
         return !matches!(first, Some(Tok::Val(Value::Finish(_), _)));
@@ -25,10 +26,20 @@ fn modifies(kw: &str, first: Option<&Tok>) -> bool {
     match first {
         None => true,
         Some(Tok::Kw(k, _)) => {
-            MODIFIERS.contains(k) || TRANSFORMS.contains(k) || (kw == "normal" && *k == "bump_size")
+            MODIFIERS.contains(k)
+                || TRANSFORMS.contains(k)
+                || (kw == "normal" && *k == "bump_size")
+                // `texture { T_Gold_3C pigment { quick_color … } }` keeps the
+                // gold: POV-Ray's quick colour only matters to its quick preview
+                // (advanced/chess2.pov).
+                || (kw == "pigment" && matches!(*k, "quick_color" | "quick_colour"))
         }
         Some(Tok::Block(k, _, _)) => {
             *k == "transform"
+                // A leading warp warps the pattern in force, unless the block
+                // goes on to name its own pattern (then it is a mistake that
+                // the pigment reader reports).
+                || (*k == "warp" && !toks.iter().any(|t| matches!(t, Tok::Kw(p, _) if PATTERNS.contains(p))))
                 || (kw == "pigment" && matches!(*k, "color_map" | "colour_map" | "pigment_map"))
                 || (kw == "normal" && matches!(*k, "slope_map" | "normal_map"))
         }
@@ -59,7 +70,7 @@ impl Evaluator<'_> {
         self.defer_material_blocks = outer;
         let mut toks = sink.toks;
         if let Some(base) = base {
-            if modifies(kw, toks.first()) {
+            if modifies(kw, &toks) {
                 toks.insert(0, Tok::Val(base, b.keyword.span));
             }
         }

@@ -231,7 +231,11 @@ fn shade_texture(
         last_n = n;
         let f = &tex.finish;
         let colour = c.rgb;
-        let opacity = (1.0 - c.filter - c.transmit).max(0.0);
+        // Not clamped: POV-Ray lets `filter + transmit` above 1 make the
+        // opacity negative, so the surface's own light is subtracted from
+        // the amplified light behind it (advanced/bwstripe.pov's threshold
+        // lens; measured: rgb 0.5 transmit 2 over 0.6 gives 2·0.6 − 0.5).
+        let opacity = 1.0 - c.filter - c.transmit;
         let mut layer = (f.ambient * world.global.ambient_light + f.emission) * colour * opacity;
         for light in 0..world.lights.len() {
             if let Some(inc) = lights::incident(world, light, p, geo_n, n, ctx) {
