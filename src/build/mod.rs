@@ -837,8 +837,11 @@ impl World {
     /// The primitives whose inside holds world point `p`.
     pub fn inside_which(&self, p: DVec3) -> impl Iterator<Item = &Primitive> + '_ {
         self.primitives.iter().filter(move |prim| {
-            prim.bounds
-                .is_none_or(|b| p.cmpge(b.min).all() && p.cmple(b.max).all())
+            // An inverted solid's inside is everything outside its bounds.
+            (prim.flags.inverse
+                || prim
+                    .bounds
+                    .is_none_or(|b| p.cmpge(b.min).all() && p.cmple(b.max).all()))
                 && prim.inside(p)
         })
     }

@@ -73,6 +73,7 @@ pub const BUILTIN_NAMES: &[&str] = &[
     "vinv_transform",
     "min_extent",
     "max_extent",
+    "inside",
     "seed",
     "rand",
     "str",
@@ -401,6 +402,16 @@ impl Evaluator<'_> {
                     max
                 })))
             }
+            "inside" => {
+                arity(2, 2)?;
+                let Value::Object(o) = &args[0].0 else {
+                    return Err(self.mismatch("an object", &args[0].0, args[0].1));
+                };
+                let p = self.to_vec3(&args[1].0, args[1].1)?;
+                Ok(Value::Float(f64::from(u8::from(
+                    self.object_inside(&o.clone(), p),
+                ))))
+            }
             "seed" => {
                 arity(1, 1)?;
                 let s = f(0)?;
@@ -603,6 +614,7 @@ pub fn signature(name: &str) -> String {
         "dimension_size" => "dimension_size(ARRAY, DIMENSION)".into(),
         "defined" => "defined(NAME)".into(),
         "trace" => "trace(OBJECT, START, DIRECTION [, NORMAL])".into(),
+        "inside" => "inside(OBJECT, POINT)".into(),
         "strcmp" => "strcmp(S1, S2)".into(),
         "vturbulence" => "vturbulence(LAMBDA, OMEGA, OCTAVES, <P>)".into(),
         "bitwise_and" | "bitwise_or" | "bitwise_xor" => format!("{name}(A, B, …)"),

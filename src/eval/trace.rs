@@ -1,6 +1,6 @@
 //! Built-ins that need an object's geometry while the scene is read: `trace`
-//! (where a ray first meets an object) and `min_extent` / `max_extent` (its
-//! bounding box). Both build the object's hierarchy, kept for the calls that
+//! (where a ray first meets an object), `inside` (whether a point is in it) and
+//! `min_extent` / `max_extent` (its bounding box). Both build the object's hierarchy, kept for the calls that
 //! follow: scenes call `trace` thousands of times on one terrain to place things
 //! on it.
 
@@ -72,6 +72,12 @@ impl Evaluator<'_> {
             b.min.max(DVec3::splat(-HUGE)),
             b.max.min(DVec3::splat(HUGE)),
         )
+    }
+
+    /// `inside(OBJECT, POINT)`: whether POINT is inside OBJECT by the rules
+    /// CSG and refraction use (a surface's inside, `inverse` flipping it).
+    pub(crate) fn object_inside(&mut self, object: &Arc<Object>, p: DVec3) -> bool {
+        self.built(object).inside(p)
     }
 
     /// `trace(OBJECT, START, DIRECTION [, NORMAL])`: the point where the ray from

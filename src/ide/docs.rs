@@ -1563,6 +1563,11 @@ pub const DOCS: &[Doc] = &[
         "The point V moved by the inverse of TRANSFORM (as transforms.inc's vinv_transform).",
     ),
     func(
+        "inside",
+        "inside(OBJECT, POINT)",
+        "1 when POINT is inside the solid OBJECT (as CSG decides it), else 0.",
+    ),
+    func(
         "min_extent",
         "min_extent(OBJECT)",
         "The lowest corner of the object's bounding box (±1e10 when unbounded).",
