@@ -71,6 +71,22 @@ fn transmit_above_one_amplifies_the_light_behind() {
 }
 
 #[test]
+fn filter_hides_surface_light_by_the_colours_largest_component() {
+    // POV-Ray scales a filtering surface's own light by 1 − filter·max(r, g, b)
+    // − transmit (measured with POV-Ray 3.7): rgbf <0.2, 0.6, 0.3, 0.5> over
+    // black keeps 0.7 of its colour; over white it adds filter · colour.
+    for (backdrop, want) in [(0.0, [0.14, 0.42, 0.21]), (1.0, [0.24, 0.72, 0.36])] {
+        let scene = format!(
+            "{CAMERA}plane {{ z, 5 pigment {{ rgb {backdrop} }} finish {{ ambient 1 diffuse 0 }} }}\n\
+             disc {{ <0, 0, -1>, z, 5 pigment {{ rgbf <0.2, 0.6, 0.3, 0.5> }} finish {{ ambient 1 diffuse 0 }} }}\n"
+        );
+        let (w, px) = render(&format!("filter_max_{backdrop}"), &scene, 4, 4);
+        let c = px[(2 * w + 2) as usize];
+        assert!(close(c, want, 2e-3), "backdrop {backdrop}: {c:?}");
+    }
+}
+
+#[test]
 fn quick_color_keeps_the_pigment_in_force() {
     // `pigment { quick_color … }` inside a texture only sets the preview colour
     // (advanced/chess2.pov): the declared texture's pigment stays.

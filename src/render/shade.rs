@@ -173,7 +173,8 @@ fn shade(
 /// weight, and averages the colours by the blend (as POV-Ray does).
 ///
 /// POV-Ray's rule for transparency: each layer's ambient, emission and diffuse
-/// light is scaled by its opacity `1 - filter - transmit`; what passes through is
+/// light is scaled by its opacity `1 - filter · max(r, g, b) - transmit`
+/// (measured: rgbf <0.2, 0.6, 0.3, 0.5> shows 0.7 of its colour); what passes through is
 /// scaled by `filter · colour + transmit` and continues into the layer below, and
 /// past the last layer into the object (refracted by the interior's `ior`).
 fn shade_texture(
@@ -231,11 +232,13 @@ fn shade_texture(
         last_n = n;
         let f = &tex.finish;
         let colour = c.rgb;
-        // Not clamped: POV-Ray lets `filter + transmit` above 1 make the
-        // opacity negative, so the surface's own light is subtracted from
-        // the amplified light behind it (advanced/bwstripe.pov's threshold
-        // lens; measured: rgb 0.5 transmit 2 over 0.6 gives 2·0.6 − 0.5).
-        let opacity = 1.0 - c.filter - c.transmit;
+        // Filter counts in proportion to the colour's largest component (a
+        // dark filtering colour hides less of the surface's own light), as
+        // POV-Ray measures. Not clamped: POV-Ray lets `filter + transmit`
+        // above 1 make the opacity negative, so the surface's own light is
+        // subtracted from the amplified light behind it (advanced/bwstripe.pov's
+        // threshold lens; measured: rgb 0.5 transmit 2 over 0.6 gives 2·0.6 − 0.5).
+        let opacity = 1.0 - c.filter * colour.max_element() - c.transmit;
         let mut layer = (f.ambient * world.global.ambient_light + f.emission) * colour * opacity;
         for light in 0..world.lights.len() {
             if let Some(inc) = lights::incident(world, light, p, geo_n, n, ctx) {
