@@ -92,6 +92,7 @@ fn any_object() -> impl Strategy<Value = Object> {
             |(a, b, c, n0, n1, n2)| object(Shape::SmoothTriangle {
                 vertices: [a, a + b, a + c],
                 normals: [n0, n1, n2],
+                uv: None,
             })
         ),
         1 => (0usize..3, prop::collection::vec(convex_object(), 2..4)).prop_map(|(k, children)| {

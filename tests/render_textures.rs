@@ -296,3 +296,79 @@ fn pattern_normals_are_as_strong_as_povray_s() {
         );
     }
 }
+
+/// A quad from -1 to 1 in x and y with uv coordinates from 0 to 1, in a mesh.
+const UV_QUAD: &str = "#declare Quad = mesh {\n\
+    triangle { <-1, -1, 0>, <1, -1, 0>, <1, 1, 0> uv_vectors <0, 0>, <1, 0>, <1, 1> }\n\
+    triangle { <-1, -1, 0>, <1, 1, 0>, <-1, 1, 0> uv_vectors <0, 0>, <1, 1>, <0, 1> }\n\
+    }\n\
+    #declare Ramp = pigment { uv_mapping gradient x color_map { [0 rgb 0] [1 rgb 1] } }\n";
+
+#[test]
+fn uv_mapping_moves_with_the_transforms_of_its_own_block_only() {
+    // Measured on POV-Ray 3.7: a scale written in the pigment that holds
+    // `uv_mapping` repeats the ramp over the quad; one applied to the texture, to
+    // a declared pigment where it is used, or to the object does not.
+    let f = "finish { ambient 1 diffuse 0 }";
+    let rows = [
+        format!("mesh {{ Quad pigment {{ uv_mapping gradient x color_map {{ [0 rgb 0] [1 rgb 1] }} scale 0.5 }} {f} }}"),
+        format!("mesh {{ Quad texture {{ pigment {{ Ramp }} scale 0.5 {f} }} }}"),
+        format!("mesh {{ Quad pigment {{ Ramp scale 0.5 }} {f} }}"),
+        format!("mesh {{ Quad pigment {{ Ramp }} {f} scale <1, 1, 1> scale 0.999 }}"),
+        format!("mesh {{ Quad texture {{ uv_mapping pigment {{ gradient x color_map {{ [0 rgb 0] [1 rgb 1] }} }} scale 0.5 {f} }} }}"),
+    ];
+    for (i, obj) in rows.iter().enumerate() {
+        let scene = format!(
+            "global_settings {{ assumed_gamma 1.0 }}\n\
+             camera {{ orthographic location <0, 0, -5> look_at 0 right x*2 up y*2 }}\n\
+             {UV_QUAD}{obj}\n"
+        );
+        let (w, px) = render(&format!("uv_mapping_{i}"), &scene, 16, 2);
+        let repeats = if i == 0 || i == 4 { 2.0 } else { 1.0 };
+        for x in 0..w {
+            let u = (f64::from(x) + 0.5) / f64::from(w);
+            let want = (u * repeats).fract();
+            let got = px[(w + x) as usize][0];
+            assert!(
+                (got - want).abs() < 0.01,
+                "{obj}: pixel {x} is {got}, want {want}"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_scene_without_version_or_assumed_gamma_is_written_without_gamma() {
+    // POV-Ray 3.7 turns gamma handling off in a scene with neither `#version 3.7`
+    // nor `assumed_gamma` (measured: a 0-1 ramp is written as a linear ramp of
+    // file values); `#version 3.7` alone assumes 1.0 and writes sRGB.
+    let body = "camera { orthographic location <0, 0, -5> look_at 0 right x*2 up y*2 }\n\
+        plane { z, 0 pigment { gradient x color_map { [0 rgb 0] [1 rgb 1] } scale 2 translate -x }\n\
+        finish { ambient 1 diffuse 0 } }\n";
+    for (name, head, linear) in [
+        ("gamma_none", "", true),
+        ("gamma_v36", "#version 3.6;\n", true),
+        ("gamma_v37", "#version 3.7;\n", false),
+        ("gamma_inc", "#include \"colors.inc\"\n", false),
+    ] {
+        let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("render_textures");
+        std::fs::create_dir_all(&dir).expect("temp dir");
+        let src = dir.join(format!("{name}.rts"));
+        let out = dir.join(format!("{name}.png"));
+        std::fs::write(&src, format!("{head}{body}")).expect("write scene");
+        let status = Command::new(env!("CARGO_BIN_EXE_rts"))
+            .arg("render")
+            .arg(&src)
+            .arg("-o")
+            .arg(&out)
+            .args(["-W", "16", "-H", "2", "-q", "--bit-depth", "16"])
+            .status()
+            .expect("run rts");
+        assert!(status.success(), "render {name}");
+        let img = image::open(&out).expect("read png").to_rgb16();
+        // Pixel 4 of 16: working value 0.28125.
+        let v = f64::from(img.get_pixel(4, 1)[0]) / 65535.0;
+        let want = if linear { 0.28125 } else { 0.5669 };
+        assert!((v - want).abs() < 0.005, "{name}: {v}, want {want}");
+    }
+}

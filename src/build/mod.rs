@@ -465,12 +465,14 @@ impl Builder {
                 min: min.min(*max),
                 max: max.max(*min),
             },
-            Shape::Triangle { vertices } => {
+            Shape::Triangle { vertices, .. } => {
                 let v = vertices.map(to_world);
                 let (a, e1, e2) = (v[0], v[1] - v[0], v[2] - v[0]);
                 return (PrimShape::Triangle { a, e1, e2 }, None);
             }
-            Shape::SmoothTriangle { vertices, normals } => {
+            Shape::SmoothTriangle {
+                vertices, normals, ..
+            } => {
                 let v = vertices.map(to_world);
                 let n = normals.map(|n| {
                     world_from_obj

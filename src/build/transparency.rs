@@ -13,6 +13,7 @@ pub(super) fn translucent(primitives: &[Primitive]) -> Vec<bool> {
             Pattern::Solid(c) => c.filter + c.transmit > 0.0,
             Pattern::Checker(pair) => pair.iter().any(pigment),
             Pattern::Image(m) => m.see_through,
+            Pattern::Uv(p) => pigment(p),
             Pattern::Mapped(m) => match &m.map {
                 PatternMap::Colours(e) => e.iter().any(|(_, c)| c.filter + c.transmit > 0.0),
                 PatternMap::Pigments(e) => e.iter().any(|(_, p)| pigment(p)),

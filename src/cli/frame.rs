@@ -22,6 +22,8 @@ pub(crate) struct Image {
     pub t_render: std::time::Duration,
     /// `assumed_gamma` of the scene.
     pub assumed_gamma: Option<f64>,
+    /// The scene turns gamma handling off (see [`rts::scene::GlobalSettings::gamma_off`]).
+    pub gamma_off: bool,
     /// Top-level objects.
     pub objects: usize,
     /// Light sources.
@@ -148,6 +150,7 @@ impl<'a> Renderer<'a> {
                 });
                 (rendered, t_build, t2.elapsed(), world.global.assumed_gamma)
             };
+            let gamma_off = scene.global.gamma_off;
             let (rendered, t_build, t_render, assumed_gamma) = match &self.pool {
                 Some(pool) => pool.install(job),
                 None => job(),
@@ -161,6 +164,7 @@ impl<'a> Renderer<'a> {
                         t_build,
                         t_render,
                         assumed_gamma,
+                        gamma_off,
                         objects: scene.objects.len(),
                         lights: scene.lights.len(),
                     })
@@ -185,13 +189,16 @@ impl<'a> Renderer<'a> {
     }
 
     /// File encoding options for this run.
-    pub fn output_options(&self, assumed_gamma: Option<f64>) -> OutputOptions {
+    /// `gamma_off`: the scene turns gamma handling off, so without `--gamma` the
+    /// working values are written as they are.
+    pub fn output_options(&self, assumed_gamma: Option<f64>, gamma_off: bool) -> OutputOptions {
         let data = self.settings.pass.is_data();
         OutputOptions {
-            gamma: if data {
-                Gamma::Power(1.0)
-            } else {
-                self.args.gamma
+            gamma: match self.args.gamma {
+                _ if data => Gamma::Power(1.0),
+                Some(g) => g,
+                None if gamma_off => Gamma::Power(1.0),
+                None => Gamma::Srgb,
             },
             bit_depth: if self.args.bit_depth == 16 {
                 BitDepth::Sixteen

@@ -248,7 +248,8 @@ pub fn run(
     }
     let opts = RenderOptions { width, height };
     let out = OutputOptions {
-        gamma: args.gamma,
+        // Physically based output is always display-encoded.
+        gamma: args.gamma.unwrap_or(Gamma::Srgb),
         bit_depth: if args.bit_depth == 16 {
             BitDepth::Sixteen
         } else {

@@ -46,9 +46,11 @@ pub struct RenderArgs {
     /// Image height in pixels.
     #[arg(short = 'H', long = "height", default_value_t = 600)]
     pub height: u32,
-    /// The file's gamma: `srgb` (POV-Ray 3.7's default) or a number (`1.0` writes linear values).
-    #[arg(long, value_name = "srgb|G", default_value = "srgb")]
-    pub gamma: Gamma,
+    /// The file's gamma: `srgb` (POV-Ray 3.7's default) or a number (`1.0` writes linear
+    /// values). Without it, a scene with neither `assumed_gamma` nor `#version 3.7` is
+    /// written as POV-Ray does, with gamma handling off.
+    #[arg(long, value_name = "srgb|G")]
+    pub gamma: Option<Gamma>,
     /// Bits per channel in PNG and PPM files.
     #[arg(long, value_name = "8|16", default_value_t = 8, value_parser = clap::value_parser!(u8).range(8..=16))]
     pub bit_depth: u8,
@@ -426,7 +428,7 @@ pub fn run(args: &RenderArgs) -> i32 {
         Ok(i) => i,
         Err(code) => return code,
     };
-    let out = r.output_options(img.assumed_gamma);
+    let out = r.output_options(img.assumed_gamma, img.gamma_off);
     let t3 = Instant::now();
     if let Err(e) = rts::output::write_as(&img.film, &output, format, &out) {
         eprintln!("error: {e}");

@@ -438,7 +438,7 @@ pub fn run(
                     break;
                 }
             };
-            let out = r.output_options(img.assumed_gamma);
+            let out = r.output_options(img.assumed_gamma, img.gamma_off);
             let t_render = img.t_render;
             if tx.send((f, path.clone(), img.film, out)).is_err() {
                 // The writer stopped on an error, reported below.

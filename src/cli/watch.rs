@@ -150,6 +150,12 @@ fn render_once(args: &WatchArgs, options: &rts::eval::EvalOptions) -> HashSet<Pa
     let world = rts::build::build(&scene);
     let out = OutputOptions {
         assumed_gamma: scene.global.assumed_gamma,
+        // Gamma handling off, as `rts render` without `--gamma` writes it.
+        gamma: if scene.global.gamma_off {
+            rts::output::Gamma::Power(1.0)
+        } else {
+            rts::output::Gamma::Srgb
+        },
         ..OutputOptions::default()
     };
     let d = args.preview_divisor;

@@ -60,6 +60,7 @@ pub(crate) const BLOCKS: &[&str] = &[
     "bump_map",
     "material_map",
     "interior_texture",
+    "subsurface",
 ];
 
 /// POV-Ray blocks that a later release implements.
@@ -185,6 +186,10 @@ impl Evaluator<'_> {
             }
             "global_settings" => {
                 self.global_settings(&mut c);
+                return Ok(None);
+            }
+            "subsurface" => {
+                self.subsurface(&mut c)?;
                 return Ok(None);
             }
             _ => {

@@ -137,7 +137,8 @@ impl Evaluator<'_> {
             "final_clock" => o.final_clock,
             "image_width" => o.image_width,
             "image_height" => o.image_height,
-            _ => 3.7,
+            // `version`: the last `#version`, 3.7 when none was set.
+            _ => self.language_version.unwrap_or(3.7),
         })
     }
 

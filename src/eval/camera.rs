@@ -54,6 +54,7 @@ pub(crate) const GLOBAL_ITEMS: &[&str] = &[
     "number_of_waves",
     "hf_gray_16",
     "path_tracing",
+    "mm_per_unit",
 ];
 
 /// An out-of-range camera value.
@@ -397,6 +398,12 @@ impl Evaluator<'_> {
     pub(crate) fn global_settings(&mut self, c: &mut Cursor) {
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
+                Tok::Kw("mm_per_unit", span) => self
+                    .take_float(
+                        c,
+                        "the millimetres per scene unit (for subsurface scattering)",
+                    )
+                    .map(|_| self.warn(super::subsurface::ignored(span, "`mm_per_unit`"))),
                 Tok::Kw("ambient_light", _) => self
                     .take_colour(c, "the ambient light colour")
                     .map(|x| self.scene.global.ambient_light = x.rgb),

@@ -286,6 +286,7 @@ impl Evaluator<'_> {
                         .with_help("write `#version 3.7;`"),
                     );
                 }
+                self.language_version = Some(ver);
                 Ok(())
             }
         }

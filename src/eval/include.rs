@@ -177,6 +177,11 @@ impl Evaluator<'_> {
             self.expand(&file.items, out);
             self.scope.pop();
             self.include_stack.pop();
+            // POV-Ray's own include files end by restoring `#version` to what it
+            // was, 3.7 when the scene set none; ours stand for them.
+            if self.sources.get(id).name.starts_with("<stdlib>/") {
+                self.language_version = Some(self.language_version.unwrap_or(3.7));
+            }
         }
         self.trace.pop();
         Ok(())

@@ -27,6 +27,7 @@ pub(crate) const TEXTURE_ITEMS: &[&str] = &[
     "scale",
     "matrix",
     "transform",
+    "uv_mapping",
 ];
 /// What a `texture { }` accepts: its own items, and the patterns and modifiers of
 /// a patterned texture.
@@ -262,6 +263,7 @@ impl Evaluator<'_> {
         let mut plain_items = declared;
         // The pattern written in this block, with its textures and transforms.
         let mut pat: Option<TexturePatternSpec> = None;
+        let mut uv_mapping: Option<Span> = None;
         while let Some(tok) = c.next() {
             let tok = self.function_pattern_token(tok);
             let tok = self.block_pattern_token(tok);
@@ -370,10 +372,31 @@ impl Evaluator<'_> {
                     }
                     None => Err(warp_without_pattern(span, "texture")),
                 },
+                Tok::Kw("uv_mapping", span) => {
+                    uv_mapping = Some(span);
+                    Ok(())
+                }
                 other => Err(self.unexpected(c, &other, &texture_items())),
             };
             if let Err(f) = r {
                 self.report(f);
+            }
+        }
+        if let Some(span) = uv_mapping {
+            if pat.is_some() || declared_patterned {
+                self.report(
+                    Diagnostic::error(
+                        codes::UNSUPPORTED,
+                        span,
+                        "`uv_mapping` on a patterned texture is not implemented",
+                    )
+                    .with_help("write `uv_mapping` in the pigments of the textures it chooses")
+                    .into(),
+                );
+            } else {
+                // The texture's pigment, with the transforms written in this
+                // block, is looked up at the surface's uv coordinates.
+                tex.pigment = uv_mapped(std::mem::take(&mut tex.pigment));
             }
         }
         match pat {
@@ -848,24 +871,6 @@ impl Evaluator<'_> {
                 self.report(f);
             }
         }
-        if uv_mapping {
-            match &pig.pattern {
-                Pattern::Image(im) => {
-                    let mut im = (**im).clone();
-                    im.uv_mapping = true;
-                    pig.pattern = Pattern::Image(Arc::new(im));
-                }
-                _ => self.report(
-                    Diagnostic::error(
-                        codes::UNSUPPORTED,
-                        c.span,
-                        "`uv_mapping` is implemented for `image_map` pigments only",
-                    )
-                    .with_help("remove `uv_mapping`, or use an image_map")
-                    .into(),
-                ),
-            }
-        }
         if modified {
             if let (None, Pattern::Image(im)) = (&spec.kind, &pig.pattern) {
                 // Turbulence and warps of an image map move the point it looks up.
@@ -886,6 +891,9 @@ impl Evaluator<'_> {
                     map,
                 }));
             }
+        }
+        if uv_mapping {
+            pig = uv_mapped(pig);
         }
         Ok(pig)
     }
@@ -1395,5 +1403,21 @@ impl Evaluator<'_> {
             }
         }
         Ok(r)
+    }
+}
+
+/// `pig` looked up at the surface's uv coordinates (`uv_mapping`). The transforms
+/// it holds so far belong to the uv lookup; any applied later (by a texture or
+/// object) leave it where it is, as in POV-Ray. An image lies flat on the uv
+/// square whatever its `map_type`.
+fn uv_mapped(mut pig: Pigment) -> Pigment {
+    if let Pattern::Image(im) = &pig.pattern {
+        let mut im = (**im).clone();
+        im.map_type = 0;
+        pig.pattern = Pattern::Image(Arc::new(im));
+    }
+    Pigment {
+        pattern: Pattern::Uv(Arc::new(pig)),
+        transform: None,
     }
 }

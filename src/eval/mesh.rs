@@ -9,7 +9,7 @@ use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
 use crate::scene::{MeshData, Object, Shape, Texture};
 use crate::span::Span;
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 use rustc_hash::FxHashMap;
 use std::sync::Arc;
 
@@ -23,6 +23,7 @@ struct MeshBuilder {
     data: MeshData,
     positions: FxHashMap<[u32; 3], u32>,
     normals: FxHashMap<[u32; 3], u32>,
+    uvs: FxHashMap<[u32; 3], u32>,
     textures: FxHashMap<*const Texture, u32>,
 }
 
@@ -35,10 +36,34 @@ impl MeshBuilder {
         })
     }
 
-    fn push(&mut self, v: [DVec3; 3], n: Option<[DVec3; 3]>, tex: Option<&Arc<Texture>>) {
+    fn push(
+        &mut self,
+        v: [DVec3; 3],
+        n: Option<[DVec3; 3]>,
+        tex: Option<&Arc<Texture>>,
+        uv: Option<[DVec2; 3]>,
+    ) {
         let d = &mut self.data;
         let tri = v.map(|p| MeshBuilder::index(&mut self.positions, &mut d.positions, p));
         d.triangles.push(tri);
+        if let Some(uv) = uv {
+            // Triangles before the first with uv_vectors get <0, 0> corners.
+            if d.uvs.is_empty() {
+                d.uvs.push([0.0; 2]);
+            }
+            d.uv_indices.resize(d.triangles.len() - 1, [0; 3]);
+            let k = uv.map(|p| {
+                let key = [p.x as f32, p.y as f32];
+                let bits = [key[0].to_bits(), key[1].to_bits(), 0];
+                *self.uvs.entry(bits).or_insert_with(|| {
+                    d.uvs.push(key);
+                    d.uvs.len() as u32 - 1
+                })
+            });
+            d.uv_indices.push(k);
+        } else if !d.uv_indices.is_empty() {
+            d.uv_indices.push([0; 3]);
+        }
         if let Some(n) = n {
             if d.normal_indices.len() + 1 < d.triangles.len() {
                 d.normal_indices
@@ -67,7 +92,19 @@ impl MeshBuilder {
 
 impl Evaluator<'_> {
     /// `mesh { TRIANGLE… [inside_vector V] }` (modifiers follow, read by the caller).
+    /// Also `mesh { MESH_IDENT … }`: a declared mesh used again, with its own
+    /// texture and transforms, before the modifiers that follow.
     pub(crate) fn mesh(&mut self, c: &mut Cursor) -> R<Object> {
+        if let Some(Tok::Val(Value::Object(o), _)) = c.peek() {
+            if matches!(o.shape, Shape::Mesh(_)) {
+                let Some(Tok::Val(Value::Object(o), _)) = c.next() else {
+                    unreachable!()
+                };
+                let mut o = Arc::try_unwrap(o).unwrap_or_else(|a| (*a).clone());
+                o.span = c.span;
+                return Ok(o);
+            }
+        }
         let mut b = MeshBuilder::default();
         loop {
             match c.peek() {
@@ -107,13 +144,17 @@ impl Evaluator<'_> {
                     };
                     let place = |p: DVec3| o.transform.as_deref().map_or(p, |t| t.point(p));
                     match &o.shape {
-                        Shape::Triangle { vertices } => {
-                            b.push(vertices.map(place), None, o.texture.as_ref())
+                        Shape::Triangle { vertices, uv } => {
+                            b.push(vertices.map(place), None, o.texture.as_ref(), *uv)
                         }
-                        Shape::SmoothTriangle { vertices, normals } => {
+                        Shape::SmoothTriangle {
+                            vertices,
+                            normals,
+                            uv,
+                        } => {
                             let n =
                                 normals.map(|n| o.transform.as_deref().map_or(n, |t| t.normal(n)));
-                            b.push(vertices.map(place), Some(n), o.texture.as_ref())
+                            b.push(vertices.map(place), Some(n), o.texture.as_ref(), *uv)
                         }
                         _ => {
                             return Err(Diagnostic::error(
@@ -150,10 +191,34 @@ impl Evaluator<'_> {
             data.texture_indices
                 .resize(data.triangles.len(), [u32::MAX; 3]);
         }
+        if !data.uv_indices.is_empty() {
+            data.uv_indices.resize(data.triangles.len(), [0; 3]);
+        }
         Ok(Object::new(
             Shape::Mesh(self.mesh_cache.intern(data)),
             c.span,
         ))
+    }
+
+    /// `[uv_vectors UV1, UV2, UV3]` after a triangle's corners: the corners' uv
+    /// coordinates (2D vectors; a longer vector's first two components).
+    pub(crate) fn triangle_uv(&mut self, c: &mut Cursor) -> R<Option<[DVec2; 3]>> {
+        let Some(Tok::Kw("uv_vectors", _)) = c.peek() else {
+            return Ok(None);
+        };
+        c.next();
+        let mut uv = [DVec2::ZERO; 3];
+        for (k, slot) in uv.iter_mut().enumerate() {
+            if k > 0 {
+                c.comma();
+            }
+            let p = self.take_vec3(
+                c,
+                "a corner's uv coordinates (3 in all: `uv_vectors <u, v>, <u, v>, <u, v>`)",
+            )?;
+            *slot = DVec2::new(p.x, p.y);
+        }
+        Ok(Some(uv))
     }
 
     fn inside_vector(&mut self, c: &mut Cursor) -> R<DVec3> {

@@ -36,6 +36,7 @@ mod scope;
 mod shapes;
 mod shapes_more;
 mod spline;
+mod subsurface;
 mod text;
 mod timeline;
 mod trace;
@@ -206,6 +207,7 @@ pub fn eval_cached(
         scene_dir,
         rand_streams: Vec::new(),
         stopped: false,
+        language_version: None,
         parsed_includes: std::mem::take(&mut cache.parsed_includes),
         mesh_cache: std::mem::take(&mut cache.meshes),
         data_files: Default::default(),
@@ -271,6 +273,9 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) rand_streams: Vec<u64>,
     /// Set by `#error` and limits: evaluation stops.
     pub(crate) stopped: bool,
+    /// The language version set by the last `#version` (a standard include file
+    /// sets 3.7 when none was, as POV-Ray's own do); `None` when never set.
+    pub(crate) language_version: Option<f64>,
     /// Include files parsed so far (`None`: it had syntax errors, already reported).
     pub(crate) parsed_includes: rustc_hash::FxHashMap<FileId, Option<std::rc::Rc<ast::File>>>,
     /// Meshes kept from earlier evaluations of the same scene.
@@ -405,9 +410,22 @@ impl Evaluator<'_> {
                 );
             }
             if self.scene.global.assumed_gamma.is_none() {
+                // POV-Ray 3.7 assumes 1.0 in a 3.7 scene; in a scene of an older
+                // version, or of none, it turns gamma handling off (measured).
+                let legacy = self.language_version.is_none_or(|v| v < 3.7);
+                self.scene.global.gamma_off = legacy;
+                let help = if legacy {
+                    "add `#version 3.7;` and `global_settings { assumed_gamma 1.0 }`; without either, POV-Ray and rts turn gamma handling off (colours are written to the file as they are)"
+                } else {
+                    "add `global_settings { assumed_gamma 1.0 }` (POV-Ray 3.7 assumes 1.0 and warns too)"
+                };
                 self.diags.push(
-                    Diagnostic::warning(codes::NO_GAMMA, Span::new(self.include_stack[0], 0, 0), "the scene does not set assumed_gamma")
-                        .with_help("add `global_settings { assumed_gamma 1.0 }` (POV-Ray 3.7 assumes 1.0 and warns too)"),
+                    Diagnostic::warning(
+                        codes::NO_GAMMA,
+                        Span::new(self.include_stack[0], 0, 0),
+                        "the scene does not set assumed_gamma",
+                    )
+                    .with_help(help),
                 );
             }
             if self.scene.lights.is_empty()

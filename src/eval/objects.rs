@@ -161,9 +161,11 @@ impl Evaluator<'_> {
                         .with_help("move one corner off the line through the other two"),
                     );
                 }
+                let uv = self.triangle_uv(c)?;
                 Object::new(
                     Shape::Triangle {
                         vertices: [a, b, cc],
+                        uv,
                     },
                     span,
                 )

@@ -251,6 +251,7 @@ impl Evaluator<'_> {
                 Shape::SmoothTriangle {
                     vertices: [v[0], v[2], v[4]],
                     normals: [v[1], v[3], v[5]],
+                    uv: self.triangle_uv(c)?,
                 }
             }
             "polygon" => {

@@ -951,6 +951,22 @@ pub const DOCS: &[Doc] = &[
         "light_group { LIGHTS OBJECTS }",
         "Lights that light only the objects of the group.",
     ),
+    // subsurface scattering (read, ignored)
+    kw(
+        "subsurface",
+        "subsurface { translucency COLOUR | samples N, M radiosity BOOL }",
+        "POV-Ray's subsurface light transport (in finish, interior, global_settings): read and ignored with a warning.",
+    ),
+    kw(
+        "translucency",
+        "translucency COLOUR",
+        "How far light travels under the surface, per colour (in `subsurface`; ignored).",
+    ),
+    kw(
+        "mm_per_unit",
+        "mm_per_unit N",
+        "Millimetres per scene unit for subsurface scattering (in global_settings; ignored).",
+    ),
     // scene settings
     kw(
         "global_settings",

@@ -43,7 +43,7 @@ pub fn tokenize(text: &str) -> Vec<Tok> {
     while i < b.len() {
         let c = b[i];
         let start = i;
-        let kind = if c.is_ascii_whitespace() {
+        let kind = if c.is_ascii_whitespace() || c == 0x0B {
             i += 1;
             continue;
         } else if c == b'/' && b.get(i + 1) == Some(&b'/') {

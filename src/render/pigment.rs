@@ -50,6 +50,10 @@ pub fn evaluate_uv(pigment: &Pigment, p: DVec3, uv: Option<DVec2>) -> Colour {
         Pattern::Checker(pair) => evaluate_uv(&pair[checker_index(p)], p, uv),
         Pattern::Mapped(m) => mapped(m, p, uv),
         Pattern::Image(im) => image_map::lookup(im, p, uv),
+        Pattern::Uv(inner) => match uv {
+            Some(uv) => evaluate_uv(inner, DVec3::new(uv.x, uv.y, 0.0), Some(uv)),
+            None => evaluate_uv(inner, p, None),
+        },
     }
 }
 

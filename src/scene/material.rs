@@ -171,6 +171,7 @@ impl Pigment {
             Pattern::Solid(_) => false,
             Pattern::Checker(pair) => pair.iter().any(Pigment::uses_uv),
             Pattern::Image(im) => im.uv_mapping,
+            Pattern::Uv(_) => true,
             Pattern::Mapped(m) => match &m.map {
                 PatternMap::Colours(_) => false,
                 PatternMap::Pigments(entries) => entries.iter().any(|(_, p)| p.uses_uv()),
@@ -201,6 +202,11 @@ pub enum Pattern {
     Mapped(Box<Mapped>),
     /// `image_map { … }`.
     Image(Arc<ImageMap>),
+    /// `pigment { uv_mapping … }`: the pigment looked up at `<u, v, 0>`, the
+    /// surface's uv coordinates, through the transforms written in its own block
+    /// (those applied from outside it, by a texture or object, do not move it, as
+    /// in POV-Ray). Where a shape has no uv coordinates the point is used.
+    Uv(Arc<Pigment>),
 }
 
 /// A pattern function with its modifiers and what its values map to.

@@ -77,6 +77,10 @@ pub struct GlobalSettings {
     /// `assumed_gamma`: the gamma of the working colour space; `None` when the scene
     /// does not say (POV-Ray 3.7 then behaves as `assumed_gamma 1.0` with a warning).
     pub assumed_gamma: Option<f64>,
+    /// No `assumed_gamma` in a scene without `#version 3.7`: POV-Ray 3.7 then turns
+    /// gamma handling off, and the classic renderer writes the working values to
+    /// the file as they are (unless `--gamma` is given).
+    pub gamma_off: bool,
     /// `max_trace_level`: deepest recursion of reflected rays (default 5).
     pub max_trace_level: u32,
     /// `adc_bailout`: rays whose contribution falls below this are not traced further
@@ -96,6 +100,7 @@ impl Default for GlobalSettings {
         GlobalSettings {
             ambient_light: DVec3::ONE,
             assumed_gamma: None,
+            gamma_off: false,
             max_trace_level: 5,
             adc_bailout: 1.0 / 255.0,
             noise_generator: 2,

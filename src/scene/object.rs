@@ -94,6 +94,9 @@ pub enum Shape {
     Triangle {
         /// Vertices.
         vertices: [DVec3; 3],
+        /// `uv_vectors UV1, UV2, UV3`: the corners' uv coordinates (used inside a
+        /// mesh, for `uv_mapping` and `mesh_camera` distribution 3).
+        uv: Option<[glam::DVec2; 3]>,
     },
     /// `union { OBJECT… }`: the children keep their own transforms, which are applied
     /// before the union's.
@@ -166,6 +169,8 @@ pub enum Shape {
         vertices: [DVec3; 3],
         /// Vertex normals (unnormalised as written).
         normals: [DVec3; 3],
+        /// `uv_vectors UV1, UV2, UV3`, as for [`Shape::Triangle`].
+        uv: Option<[glam::DVec2; 3]>,
     },
     /// `polygon { N, P1, …, PN }`: closed sub-polygons filled by the even-odd rule,
     /// in one plane (not a solid).

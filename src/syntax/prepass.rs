@@ -196,7 +196,7 @@ impl Scanner<'_> {
                 }
                 _ => {}
             }
-            if !c.is_ascii_whitespace() {
+            if !(c.is_ascii_whitespace() || c == 0x0B) {
                 self.prev = c;
                 if !matches!(c, b'-' | b'+' | b'!') {
                     self.prefix_run = 0;
@@ -316,7 +316,7 @@ impl Scanner<'_> {
     fn directive(&mut self, hash: usize) -> bool {
         let b = self.bytes;
         let mut i = hash + 1;
-        while i < b.len() && (b[i] == b' ' || b[i] == b'\t') {
+        while i < b.len() && matches!(b[i], b' ' | b'\t' | 0x0B | 0x0C) {
             i += 1;
         }
         let start = i;

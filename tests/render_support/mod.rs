@@ -62,6 +62,7 @@ pub fn cuboid(min: DVec3, max: DVec3) -> Object {
 pub fn triangle(a: DVec3, b: DVec3, c: DVec3) -> Object {
     object(Shape::Triangle {
         vertices: [a, b, c],
+        uv: None,
     })
 }
 
