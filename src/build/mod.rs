@@ -184,17 +184,6 @@ pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
     world
 }
 
-/// What [`World::shadow_blockers`] found on a shadow ray.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Blockers {
-    /// Nothing: the light arrives whole.
-    None,
-    /// A surface that lets no light through: the light is blocked.
-    Opaque,
-    /// Only surfaces that may let light through: their filters decide.
-    Translucent,
-}
-
 /// What a child takes from its enclosing objects.
 #[derive(Clone)]
 struct Inherited {
@@ -767,33 +756,69 @@ impl World {
         })
     }
 
-    /// What blocks a shadow ray in `(t_min, t_max)`: nothing, something opaque
-    /// (see [`World::translucent`]; the ray is dark whatever else it meets), or
-    /// only surfaces that may let light through. One traversal; `hint` as in
-    /// [`World::occluded_hinted`] (an opaque blocker).
-    pub fn shadow_blockers(&self, ray: &Ray, t_min: f64, t_max: f64, hint: &mut u32) -> Blockers {
-        let mut seen_translucent = false;
-        let opaque = self.first_blocker(ray, t_min, t_max, hint, |i| {
+    /// Walks a shadow ray in `(t_min, t_max)` once: `true` (blocked) as soon as a
+    /// shadow-casting surface that lets no light through is met (see
+    /// [`World::translucent`]); every crossing of the surfaces that may let light
+    /// through goes to `visit`, in no particular order, and `visit` returning
+    /// `false` ends the walk as blocked too. `hint` as in
+    /// [`World::occluded_hinted`] (an opaque blocker; only opaque ones are kept).
+    ///
+    /// One traversal for what took one to find the blockers plus one per
+    /// see-through surface, nearest first: the filters multiply, so their order
+    /// does not matter.
+    pub fn shadow_crossings(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        hint: &mut u32,
+        mut visit: impl FnMut(Hit) -> bool,
+    ) -> bool {
+        let see_through = |i: u32| self.translucent.get(i as usize).copied().unwrap_or(true);
+        let mut blocks = |i: u32| {
             let p = &self.primitives[i as usize];
             if !RayKind::Shadow.sees(&p.flags) {
                 return false;
             }
-            let see_through = self.translucent.get(i as usize).copied().unwrap_or(true);
-            if see_through && seen_translucent {
-                return false;
+            if !see_through(i) {
+                return p.intersect(ray, t_min, t_max).is_some();
             }
-            if p.intersect(ray, t_min, t_max).is_none() {
-                return false;
+            let mut t0 = t_min;
+            while let Some((t, leaf, sub)) = p.intersect(ray, t0, t_max) {
+                if !visit(Hit {
+                    t,
+                    prim: i,
+                    leaf,
+                    sub,
+                }) {
+                    return true;
+                }
+                t0 = t + surface_offset(ray.at(t));
             }
-            seen_translucent |= see_through;
-            !see_through
-        });
-        if opaque {
-            Blockers::Opaque
-        } else if seen_translucent {
-            Blockers::Translucent
-        } else {
-            Blockers::None
+            false
+        };
+        // A see-through hint would have its crossings visited twice.
+        if (*hint as usize) < self.primitives.len() && !see_through(*hint) && blocks(*hint) {
+            return true;
+        }
+        let mut found = self.unbounded.iter().copied().find(|&i| blocks(i));
+        if found.is_none() {
+            self.bvh.traverse(ray, t_min, t_max, |i, t_max| {
+                if blocks(i) {
+                    found = Some(i);
+                    return None;
+                }
+                Some(t_max)
+            });
+        }
+        match found {
+            Some(i) => {
+                if !see_through(i) {
+                    *hint = i;
+                }
+                true
+            }
+            None => false,
         }
     }
 

@@ -391,63 +391,59 @@ pub fn shadow_filter(world: &World, ray: &Ray, t_min: f64, t_max: f64, hint: &mu
             DVec3::ONE
         };
     }
-    // Dark behind anything opaque; else walk the see-through surfaces in order.
-    match world.shadow_blockers(ray, t_min, t_max, hint) {
-        crate::build::Blockers::None => return DVec3::ONE,
-        crate::build::Blockers::Opaque => return DVec3::ZERO,
-        crate::build::Blockers::Translucent => {}
-    }
+    // Dark behind anything opaque; else the product of the see-through
+    // surfaces' filters (dark past 64 of them, as a bound on the walk).
     let mut through = DVec3::ONE;
-    let mut t0 = t_min;
-    for _ in 0..64 {
-        let Some(hit) = world.intersect(ray, t0, t_max, RayKind::Shadow) else {
-            return through;
-        };
-        let s = world.surface(ray, &hit);
-        let tp = s
-            .texture_from_world
-            .map_or(s.p, |m| m.transform_point3(s.p));
-        if let Some((blob, local)) = s.blob {
-            // A blob's component textures: their filters averaged by the
-            // components' shares of the field, as their colours are.
-            let mut sum = DVec3::ZERO;
-            for (own, w) in blob.texture_weights(local) {
-                let (tex, m) = match own {
-                    Some((t, m)) => (t, Some(m)),
-                    None => (s.texture, s.texture_from_world),
-                };
-                let tp = m.map_or(s.p, |m| m.transform_point3(s.p));
-                pigment::for_each_plain(tex, tp, w, &mut |t, w| {
-                    sum += w * layers_filter(t, tp, s.uv);
-                });
-            }
-            through *= sum;
-            if through.max_element() <= 0.0 {
-                return DVec3::ZERO;
-            }
-        } else if s.texture.patterned.is_some() {
-            // The filters of the textures the pattern shows here, averaged by
-            // their blend weights.
-            let mut sum = DVec3::ZERO;
-            pigment::for_each_plain(s.texture, tp, 1.0, &mut |t, w| {
+    let mut crossings = 0;
+    let blocked = world.shadow_crossings(ray, t_min, t_max, hint, |hit| {
+        crossings += 1;
+        if crossings >= 64 {
+            return false;
+        }
+        through *= surface_filter(world, ray, &hit);
+        through.max_element() > 0.0
+    });
+    if blocked {
+        DVec3::ZERO
+    } else {
+        through
+    }
+}
+
+/// What passes through the surface at `hit` on `ray`: the product of
+/// `filter · colour + transmit` over its texture's layers (a pattern's or a
+/// blob's textures averaged by their weights there).
+fn surface_filter(world: &World, ray: &Ray, hit: &crate::build::Hit) -> DVec3 {
+    let s = world.surface(ray, hit);
+    let tp = s
+        .texture_from_world
+        .map_or(s.p, |m| m.transform_point3(s.p));
+    if let Some((blob, local)) = s.blob {
+        // A blob's component textures: their filters averaged by the
+        // components' shares of the field, as their colours are.
+        let mut sum = DVec3::ZERO;
+        for (own, w) in blob.texture_weights(local) {
+            let (tex, m) = match own {
+                Some((t, m)) => (t, Some(m)),
+                None => (s.texture, s.texture_from_world),
+            };
+            let tp = m.map_or(s.p, |m| m.transform_point3(s.p));
+            pigment::for_each_plain(tex, tp, w, &mut |t, w| {
                 sum += w * layers_filter(t, tp, s.uv);
             });
-            through *= sum;
-            if through.max_element() <= 0.0 {
-                return DVec3::ZERO;
-            }
-        } else {
-            for tex in layers(s.texture) {
-                let c = pigment::evaluate_uv(&tex.pigment, tp, s.uv);
-                through *= c.filter * c.rgb + DVec3::splat(c.transmit);
-                if through.max_element() <= 0.0 {
-                    return DVec3::ZERO;
-                }
-            }
         }
-        t0 = hit.t + crate::build::surface_offset(s.p);
+        sum
+    } else if s.texture.patterned.is_some() {
+        // The filters of the textures the pattern shows here, averaged by
+        // their blend weights.
+        let mut sum = DVec3::ZERO;
+        pigment::for_each_plain(s.texture, tp, 1.0, &mut |t, w| {
+            sum += w * layers_filter(t, tp, s.uv);
+        });
+        sum
+    } else {
+        layers_filter(s.texture, tp, s.uv)
     }
-    DVec3::ZERO
 }
 
 /// The product of `filter · colour + transmit` over the layers of plain texture
