@@ -370,10 +370,22 @@ fn transmitted(
             let dist = world
                 .intersect(&next, eps, f64::INFINITY, kind)
                 .map_or(f64::INFINITY, |h| h.t);
-            let att = 1.0 / (1.0 + (dist / i.fade_distance).powf(i.fade_power));
+            let att = interior_fade(dist, i.fade_distance, i.fade_power);
             colour * (DVec3::splat(att) + (1.0 - att) * i.fade_colour)
         }
         _ => colour,
+    }
+}
+
+/// The share of light left after `dist` units inside an interior with
+/// `fade_distance` and `fade_power`, as POV-Ray 3.7 computes it (measured):
+/// `1 / (1 + (dist / fade_distance)^fade_power)`, and for a power of 1000 or
+/// more the physical `exp(-dist / fade_distance)`.
+fn interior_fade(dist: f64, fade_distance: f64, fade_power: f64) -> f64 {
+    if fade_power >= 1000.0 {
+        (-dist / fade_distance).exp()
+    } else {
+        1.0 / (1.0 + (dist / fade_distance).powf(fade_power))
     }
 }
 
