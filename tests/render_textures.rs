@@ -387,12 +387,57 @@ fn interior_fade_follows_povray_s_two_laws() {
     };
     for (name, interior, want) in [
         ("fade_sqr", "ior 1.5 fade_distance 2 fade_power 2", 0.8),
-        ("fade_exp", "ior 1.5 fade_distance 0.5 fade_power 1001", (-2.0f64).exp()),
+        (
+            "fade_exp",
+            "ior 1.5 fade_distance 0.5 fade_power 1001",
+            (-2.0f64).exp(),
+        ),
         ("fade_glass3", "I_Glass3", (-1.0f64).exp()),
         ("fade_macro", "I_Glass_Exp(2)", (-0.5f64).exp()),
     ] {
         let (w, px) = render(name, &slab(interior), 4, 4);
         let c = px[(2 * w + 2) as usize];
         assert!(close(c, [want; 3], 1e-3), "{name}: {c:?} want {want}");
+    }
+}
+
+#[test]
+fn shadows_through_fading_interiors_fade_by_the_stretch_inside() {
+    // A clear slab 1 unit thick, 2 above a white floor, lit at 45 degrees: the
+    // floor below the camera is lit through √2 units of glass, and the camera's
+    // own ray misses the slab. POV-Ray 3.7 (measured): cos 45° · exp(−√2) for
+    // exponential fade over 1 unit, cos 45° / (1 + (√2/2)²) for power 2 over 2
+    // units, and a fade_color lets its own colour through.
+    let scene = |i: &str| {
+        format!(
+            "global_settings {{ assumed_gamma 1.0 }}\n\
+             camera {{ orthographic location <0, 10, 0> look_at 0 right x*0.2 up z*0.2 }}\n\
+             light_source {{ <0, 100, -100> rgb 1 parallel point_at 0 }}\n\
+             plane {{ y, 0 pigment {{ rgb 1 }} finish {{ ambient 0 diffuse 1 }} }}\n\
+             box {{ <-3, 2, -6>, <3, 3, -1.5> pigment {{ rgbf 1 }} finish {{ ambient 0 diffuse 0 }} interior {{ {i} }} }}\n"
+        )
+    };
+    let c = std::f64::consts::FRAC_1_SQRT_2;
+    let e = (-std::f64::consts::SQRT_2).exp();
+    for (name, interior, want) in [
+        (
+            "shadow_fade_exp",
+            "ior 1.5 fade_distance 1 fade_power 1001",
+            [c * e; 3],
+        ),
+        (
+            "shadow_fade_sqr",
+            "ior 1.5 fade_distance 2 fade_power 2",
+            [c / 1.5; 3],
+        ),
+        (
+            "shadow_fade_colour",
+            "ior 1.5 fade_distance 1 fade_power 1001 fade_color rgb <0, 0, 1>",
+            [c * e, c * e, c],
+        ),
+    ] {
+        let (w, px) = render(name, &scene(interior), 4, 4);
+        let got = px[(2 * w + 2) as usize];
+        assert!(close(got, want, 2e-4), "{name}: {got:?} want {want:?}");
     }
 }

@@ -8,7 +8,7 @@ use super::pigment;
 use super::sampler::Sampler;
 use super::stats::RayStats;
 use crate::build::{Ray, RayKind, SurfaceHit, World};
-use crate::scene::{Finish, Reflection, Texture};
+use crate::scene::{Finish, Interior, Reflection, Texture};
 use glam::DVec3;
 
 /// What one camera sample carries down its tree of rays: its sample values and
@@ -404,29 +404,86 @@ pub fn shadow_filter(world: &World, ray: &Ray, t_min: f64, t_max: f64, hint: &mu
         };
     }
     // Dark behind anything opaque; else the product of the see-through
-    // surfaces' filters (dark past 64 of them, as a bound on the walk).
+    // surfaces' filters (dark past 64 of them, as a bound on the walk), and of
+    // the fading of the interiors crossed.
     let mut through = DVec3::ONE;
     let mut crossings = 0;
+    let mut fading: Vec<Crossing> = Vec::new();
     let blocked = world.shadow_crossings(ray, t_min, t_max, hint, |hit| {
         crossings += 1;
         if crossings >= 64 {
             return false;
         }
-        through *= surface_filter(world, ray, &hit);
+        let s = world.surface(ray, &hit);
+        through *= surface_filter(&s);
+        if let Some(i) = s
+            .interior
+            .filter(|i| i.fade_distance > 0.0 && i.fade_power > 0.0)
+        {
+            fading.push(Crossing {
+                prim: hit.prim,
+                t: hit.t,
+                entering: s.geo_normal.dot(ray.dir) < 0.0,
+                interior: i,
+            });
+        }
         through.max_element() > 0.0
     });
     if blocked {
-        DVec3::ZERO
-    } else {
-        through
+        return DVec3::ZERO;
     }
+    if !fading.is_empty() {
+        through *= shadow_fade(&mut fading, t_min, t_max);
+    }
+    through
 }
 
-/// What passes through the surface at `hit` on `ray`: the product of
+/// A shadow ray's crossing of a surface whose interior fades light.
+struct Crossing<'a> {
+    prim: u32,
+    t: f64,
+    entering: bool,
+    interior: &'a Interior,
+}
+
+/// What the fading interiors let through along a shadow ray, from its
+/// `crossings` of their surfaces (in any order): each stretch inside an object
+/// fades the light as a camera ray's is faded, `a + (1 - a) fade_color` (as
+/// POV-Ray 3.7 does, measured: a slab crossed over √2 units with exponential
+/// fade over 1 unit leaves exp(-√2) of the light).
+fn shadow_fade(crossings: &mut [Crossing], t_min: f64, t_max: f64) -> DVec3 {
+    crossings.sort_by(|a, b| a.prim.cmp(&b.prim).then(a.t.total_cmp(&b.t)));
+    let mut out = DVec3::ONE;
+    for group in crossings.chunk_by(|a, b| a.prim == b.prim) {
+        let i = group[0].interior;
+        // A ray whose first crossing leaves the object started inside it.
+        let mut since = (!group[0].entering).then_some(t_min);
+        let mut stretches = Vec::new();
+        for c in group {
+            match (c.entering, since) {
+                (true, _) => since = Some(c.t),
+                (false, Some(t0)) => {
+                    stretches.push(c.t - t0);
+                    since = None;
+                }
+                (false, None) => {}
+            }
+        }
+        if let Some(t0) = since.filter(|_| t_max.is_finite()) {
+            stretches.push(t_max - t0);
+        }
+        for d in stretches {
+            let a = interior_fade(d, i.fade_distance, i.fade_power);
+            out *= DVec3::splat(a) + (1.0 - a) * i.fade_colour;
+        }
+    }
+    out
+}
+
+/// What passes through the surface `s`: the product of
 /// `filter · colour + transmit` over its texture's layers (a pattern's or a
 /// blob's textures averaged by their weights there).
-fn surface_filter(world: &World, ray: &Ray, hit: &crate::build::Hit) -> DVec3 {
-    let s = world.surface(ray, hit);
+fn surface_filter(s: &SurfaceHit) -> DVec3 {
     let tp = s
         .texture_from_world
         .map_or(s.p, |m| m.transform_point3(s.p));
