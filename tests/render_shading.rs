@@ -300,7 +300,7 @@ fn transformed_sphere_equals_moved_sphere() {
         Transform::translate(offset),
     );
     let render_one = |obj| {
-        let mut sc = scene(cam, vec![obj]);
+        let mut sc = scene(cam.clone(), vec![obj]);
         sc.lights.push(point_light(DVec3::new(-5.0, 5.0, -5.0)));
         render(
             &build(&sc),

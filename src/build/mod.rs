@@ -154,7 +154,7 @@ pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
     let has_media = object_media || !scene.atmosphere.media.is_empty();
     let tracks_interiors = has_media || !scene.atmosphere.fogs.is_empty();
     let mut world = World {
-        camera: scene.camera,
+        camera: scene.camera.clone(),
         lights: scene.lights.clone(),
         background: scene.background.rgb,
         global: scene.global.clone(),

@@ -17,6 +17,7 @@ pub(crate) const CAMERA_ITEMS: &[&str] = &[
     "panoramic",
     "spherical",
     "cylinder",
+    "mesh_camera",
     "aperture",
     "focal_point",
     "blur_samples",
@@ -35,7 +36,7 @@ pub(crate) const CAMERA_ITEMS: &[&str] = &[
     "matrix",
     "transform",
 ];
-const LATER_CAMERA: &[&str] = &["omnimax", "mesh_camera", "normal"];
+const LATER_CAMERA: &[&str] = &["omnimax", "normal"];
 /// The projection keywords.
 const PROJECTIONS: &[&str] = &[
     "perspective",
@@ -216,6 +217,10 @@ impl Evaluator<'_> {
                         cam.transform = Some(cam.transform.unwrap_or(Transform::IDENTITY).then(&t));
                     })
                 }
+                Tok::Block(_, Value::MeshCamera(m), _) => {
+                    cam.mesh = Some(m);
+                    Ok(())
+                }
                 Tok::Block(_, Value::Transform(t), _) => {
                     cam.transform = Some(cam.transform.unwrap_or(Transform::IDENTITY).then(&t));
                     Ok(())
@@ -376,8 +381,30 @@ impl Evaluator<'_> {
             blur_min_samples: spec.blur_min_samples,
             confidence: spec.confidence,
             variance: spec.variance,
+            mesh: spec.mesh.as_ref().map(|m| {
+                // Only the z of `location` and `direction` matter to a mesh
+                // camera: the offset of each ray from its face, and its sense.
+                std::sync::Arc::new(crate::scene::MeshCamera {
+                    offset: spec.location.z,
+                    reversed: spec.direction.z < 0.0,
+                    ..(**m).clone()
+                })
+            }),
             span,
         };
+        if spec.transform.is_some() && spec.mesh.is_some() {
+            self.warn(
+                Diagnostic::warning(
+                    codes::IGNORED,
+                    span,
+                    "transforms of a mesh camera are ignored: its rays come from the meshes"
+                        .to_string(),
+                )
+                .with_help(
+                    "move the meshes inside `mesh_camera { … }` instead (mesh { M translate … })",
+                ),
+            );
+        }
         if let Some(t) = spec.transform {
             cam.location = t.point(cam.location);
             cam.direction = t.vector(cam.direction);

@@ -106,11 +106,28 @@ impl Evaluator<'_> {
                         .iter()
                         .position(|k| *k == kw)
                         .unwrap_or(0);
-                    if x < 0.0 {
+                    if x < 0.0 && kw != "tightness" {
+                        // POV-Ray uses the cosine of the angle, the same for
+                        // both signs (measured: `falloff -30` lights exactly as
+                        // `falloff 30`).
+                        self.warn(
+                            Diagnostic::warning(
+                                codes::OUT_OF_RANGE,
+                                s,
+                                format!(
+                                    "`{kw} {x}` is taken as `{kw} {}`, as POV-Ray takes it",
+                                    -x
+                                ),
+                            )
+                            .with_help("write the angle without its sign"),
+                        );
+                        beam[i] = Some((-x, s));
+                        Ok(())
+                    } else if x < 0.0 {
                         Err(out_of_range(
                             s,
                             format!("`{kw}` must not be negative, found {x}"),
-                            "spotlight radius and falloff are angles in degrees; cylinder ones are distances",
+                            "tightness 0 gives an even beam; larger values narrow it",
                         ))
                     } else {
                         beam[i] = Some((x, s));

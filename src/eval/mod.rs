@@ -26,6 +26,7 @@ mod materials;
 mod media;
 mod mesh;
 mod mesh_cache;
+mod mesh_camera;
 mod modify;
 mod objects;
 mod path_tracing;

@@ -93,6 +93,8 @@ pub struct CameraSpec {
     /// Whether `right` or `up` was written (an orthographic camera then keeps their
     /// sizes).
     pub sized: bool,
+    /// `mesh_camera { … }`, if given.
+    pub mesh: Option<Arc<crate::scene::MeshCamera>>,
 }
 
 impl Default for CameraSpec {
@@ -116,6 +118,7 @@ impl Default for CameraSpec {
             confidence: 0.9,
             variance: 1.0 / 128.0,
             sized: false,
+            mesh: None,
         }
     }
 }
@@ -143,6 +146,8 @@ pub enum Value {
     Finish(Arc<Finish>),
     /// A camera.
     Camera(Arc<CameraSpec>),
+    /// A `mesh_camera { … }` block, inside a camera.
+    MeshCamera(Arc<crate::scene::MeshCamera>),
     /// A light source.
     Light(Arc<Light>),
     /// A `sky_sphere { … }`.
@@ -212,6 +217,7 @@ impl Value {
             Value::Pigment(_) => "a pigment",
             Value::Finish(_) => "a finish",
             Value::Camera(_) => "a camera",
+            Value::MeshCamera(_) => "a mesh_camera block",
             Value::Light(_) => "a light source",
             Value::SkySphere(_) => "a sky_sphere",
             Value::Fog(_) => "a fog",

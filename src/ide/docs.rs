@@ -809,6 +809,11 @@ pub const DOCS: &[Doc] = &[
         "Projection: a pinhole camera (the default).",
     ),
     kw("orthographic", "orthographic", "Projection: parallel rays."),
+    kw(
+        "mesh_camera",
+        "mesh_camera { RAYS DISTRIBUTION MESH… [smooth] }",
+        "Camera whose rays start on the faces of meshes (POV-Ray 3.7): distribution 0 one mesh per ray, 1 all meshes as one, 2 meshes side by side, 3 by uv (texture baking).",
+    ),
     kw("fisheye", "fisheye", "Projection: a spherical fisheye."),
     kw(
         "ultra_wide_angle",

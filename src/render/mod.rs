@@ -32,7 +32,7 @@ pub use sampler::Sampler;
 pub use shade::{metallic_tint, metallic_weight, reflection_amount, trace, TraceCtx};
 pub use stats::RayStats;
 
-use crate::build::{RayKind, World};
+use crate::build::{Ray, RayKind, World};
 use glam::DVec3;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -338,12 +338,40 @@ impl Renderer<'_> {
         run.mean()
     }
 
-    /// The colour of the one camera ray through image point (`x`, `y`).
+    /// The colour of the one camera ray through image point (`x`, `y`) (the mean
+    /// of the rays a mesh camera shoots into the pixel).
     fn one_ray(&self, (x, y): (f64, f64), sampler: &mut Sampler, st: &mut RenderStats) -> DVec3 {
         let world = self.world;
+        if let Some(mesh) = world
+            .camera
+            .mesh
+            .as_deref()
+            .filter(|m| m.rays_per_pixel > 1)
+        {
+            // Pixels average the rays that have a face; without any they stay black.
+            let (mut sum, mut n) = (DVec3::ZERO, 0u32);
+            for r in 0..mesh.rays_per_pixel {
+                if let Some(ray) = camera::mesh_ray(mesh, x, y, self.w, self.h, r) {
+                    sum += self.trace_camera_ray(&ray, sampler, st);
+                    n += 1;
+                }
+            }
+            return if n > 0 {
+                sum / f64::from(n)
+            } else {
+                DVec3::ZERO
+            };
+        }
         let Some(ray) = primary_ray(&world.camera, x, y, self.w, self.h, sampler) else {
             return DVec3::ZERO;
         };
+        self.trace_camera_ray(&ray, sampler, st)
+    }
+
+    /// The colour seen along camera ray `ray`.
+    fn trace_camera_ray(&self, ray: &Ray, sampler: &mut Sampler, st: &mut RenderStats) -> DVec3 {
+        let world = self.world;
+        let ray = *ray;
         st.rays.camera += 1;
         if self.settings.pass != Pass::Beauty {
             return passes::sample(world, &ray, self.settings.pass, self.max_depth);
@@ -356,6 +384,7 @@ impl Renderer<'_> {
             } else {
                 media::MediaPath::default()
             },
+            passes: 0,
         };
         trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0, &mut ctx)
     }

@@ -20,7 +20,18 @@ pub struct TraceCtx<'a> {
     pub stats: &'a mut RayStats,
     /// The objects the ray being traced is inside (for media and fog).
     pub media: MediaPath,
+    /// Surfaces passed straight through (no change of `ior`) on the way to
+    /// the ray being traced; see [`MAX_PASSES`].
+    pub passes: u32,
 }
+
+/// How many surfaces a ray may pass straight through (transmitted without a
+/// change of `ior`) before those crossings count towards `max_trace_level`.
+/// POV-Ray 3.7 does not count them at all (measured: 200 clear planes in a row
+/// under `max_trace_level 3` all let the background through, while 100
+/// surfaces with an `ior` of 1.01 end black); the bound keeps the recursion
+/// finite and shallow on scenes with thousands of such surfaces.
+pub const MAX_PASSES: u32 = 256;
 
 /// POV-Ray's "metallic" weight at angle of incidence `cos_incidence` (cosine against
 /// the facing normal): about 0 at normal incidence, 1 at grazing.
@@ -314,7 +325,10 @@ fn shade_texture(
     }
     through *= conserve;
     let next_weight = weight * through.max_element();
-    if level >= world.global.max_trace_level
+    // Passing straight through a surface costs no trace level (see
+    // `MAX_PASSES`); bending through it does.
+    let passes = ior == 1.0 && ctx.passes < MAX_PASSES;
+    if (level >= world.global.max_trace_level && !passes)
         || next_weight < world.global.adc_bailout
         || next_weight <= 0.0
     {
@@ -359,7 +373,15 @@ fn transmitted(
         }
         outer
     });
-    let colour = trace(world, &next, eps, kind, level + 1, weight, ctx);
+    let passes = ior == 1.0 && ctx.passes < MAX_PASSES;
+    let colour = if passes {
+        ctx.passes += 1;
+        let c = trace(world, &next, eps, kind, level, weight, ctx);
+        ctx.passes -= 1;
+        c
+    } else {
+        trace(world, &next, eps, kind, level + 1, weight, ctx)
+    };
     if let Some(outer) = outer {
         ctx.media = outer;
     }

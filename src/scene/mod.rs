@@ -20,7 +20,7 @@ mod warp;
 pub use animation::{Timeline, DEFAULT_FPS};
 pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, SkySphere};
 pub use blob::{BlobComponent, BlobData, BlobKind};
-pub use camera::{Camera, CameraKind};
+pub use camera::{Camera, CameraFace, CameraKind, CameraMesh, MeshCamera, UvGrid};
 pub use light::{AreaLight, Beam, Light, LightKind};
 pub use material::{
     compose, Colour, Finish, ImageMap, Interior, Irid, Mapped, Normal, Pattern, PatternKind,

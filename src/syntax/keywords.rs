@@ -172,6 +172,7 @@ pub const KEYWORDS: &[&str] = &[
     "merge",
     "mesh",
     "mesh2",
+    "mesh_camera",
     "metallic",
     "method",
     "metric",
