@@ -2,30 +2,11 @@
 //! face each pixel shoots from and where its ray goes, as measured on POV-Ray 3.7
 //! with the same scenes (a gradient backdrop reads back where each ray landed).
 
-use std::path::PathBuf;
-use std::process::Command;
+mod render_support;
 
 /// Renders `scene` at `w`×`h` with linear 16-bit output and returns its pixels.
 fn render(name: &str, scene: &str, w: u32, h: u32) -> Vec<[f64; 3]> {
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("render_mesh_camera");
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let src = dir.join(format!("{name}.rts"));
-    let out = dir.join(format!("{name}.png"));
-    std::fs::write(&src, scene).expect("write scene");
-    let status = Command::new(env!("CARGO_BIN_EXE_rts"))
-        .arg("render")
-        .arg(&src)
-        .arg("-o")
-        .arg(&out)
-        .args(["-W", &w.to_string(), "-H", &h.to_string(), "-q"])
-        .args(["--gamma", "1.0", "--bit-depth", "16"])
-        .status()
-        .expect("run rts");
-    assert!(status.success(), "render {name}");
-    let img = image::open(&out).expect("read png").to_rgb16();
-    img.pixels()
-        .map(|p| [0, 1, 2].map(|i| f64::from(p[i]) / 65535.0))
-        .collect()
+    render_support::render_source("render_mesh_camera", name, scene, w, h)
 }
 
 /// Red backdrop ahead (z = 10), blue behind (z = -10), each brightening along x

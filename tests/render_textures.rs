@@ -1,31 +1,11 @@
 //! Analytic render checks of textures: transparency (filter and transmit),
 //! filtered shadows, layered textures and a pattern's values across the image.
 
-use std::path::PathBuf;
-use std::process::Command;
+mod render_support;
 
 /// Renders `scene` at `w`×`h` with linear output and returns its pixels in 0..1.
 fn render(name: &str, scene: &str, w: u32, h: u32) -> (u32, Vec<[f64; 3]>) {
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("render_textures");
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let src = dir.join(format!("{name}.rts"));
-    let out = dir.join(format!("{name}.png"));
-    std::fs::write(&src, scene).expect("write scene");
-    let status = Command::new(env!("CARGO_BIN_EXE_rts"))
-        .arg("render")
-        .arg(&src)
-        .arg("-o")
-        .arg(&out)
-        .args(["-W", &w.to_string(), "-H", &h.to_string(), "-q"])
-        .args(["--gamma", "1.0", "--bit-depth", "16"])
-        .status()
-        .expect("run rts");
-    assert!(status.success(), "render {name}");
-    let img = image::open(&out).expect("read png").to_rgb16();
-    let px = img
-        .pixels()
-        .map(|p| [0, 1, 2].map(|i| f64::from(p[i]) / 65535.0))
-        .collect();
+    let px = render_support::render_source("render_textures", name, scene, w, h);
     (w, px)
 }
 
@@ -351,12 +331,12 @@ fn a_scene_without_version_or_assumed_gamma_is_written_without_gamma() {
         ("gamma_v37", "#version 3.7;\n", false),
         ("gamma_inc", "#include \"colors.inc\"\n", false),
     ] {
-        let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("render_textures");
+        let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("render_textures");
         std::fs::create_dir_all(&dir).expect("temp dir");
         let src = dir.join(format!("{name}.rts"));
         let out = dir.join(format!("{name}.png"));
         std::fs::write(&src, format!("{head}{body}")).expect("write scene");
-        let status = Command::new(env!("CARGO_BIN_EXE_rts"))
+        let status = std::process::Command::new(env!("CARGO_BIN_EXE_rts"))
             .arg("render")
             .arg(&src)
             .arg("-o")

@@ -110,3 +110,28 @@ pub fn scene(camera: Camera, objects: Vec<Object>) -> Scene {
     s.global.assumed_gamma = Some(1.0);
     s
 }
+
+/// Renders `scene` (rts source) with the `rts` binary at `w`×`h`, linear 16-bit
+/// output, and returns its pixels (row-major, channels in 0..1). Files go to
+/// `CARGO_TARGET_TMPDIR/<group>/<name>.{rts,png}`.
+pub fn render_source(group: &str, name: &str, scene: &str, w: u32, h: u32) -> Vec<[f64; 3]> {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(group);
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let src = dir.join(format!("{name}.rts"));
+    let out = dir.join(format!("{name}.png"));
+    std::fs::write(&src, scene).expect("write scene");
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_rts"))
+        .arg("render")
+        .arg(&src)
+        .arg("-o")
+        .arg(&out)
+        .args(["-W", &w.to_string(), "-H", &h.to_string(), "-q"])
+        .args(["--gamma", "1.0", "--bit-depth", "16"])
+        .status()
+        .expect("run rts");
+    assert!(status.success(), "render {name}");
+    let img = image::open(&out).expect("read png").to_rgb16();
+    img.pixels()
+        .map(|p| [0, 1, 2].map(|i| f64::from(p[i]) / 65535.0))
+        .collect()
+}
