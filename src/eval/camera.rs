@@ -18,6 +18,7 @@ pub(crate) const CAMERA_ITEMS: &[&str] = &[
     "spherical",
     "cylinder",
     "mesh_camera",
+    "normal",
     "aperture",
     "focal_point",
     "blur_samples",
@@ -36,7 +37,7 @@ pub(crate) const CAMERA_ITEMS: &[&str] = &[
     "matrix",
     "transform",
 ];
-const LATER_CAMERA: &[&str] = &["omnimax", "normal"];
+const LATER_CAMERA: &[&str] = &["omnimax"];
 /// The projection keywords.
 const PROJECTIONS: &[&str] = &[
     "perspective",
@@ -221,6 +222,10 @@ impl Evaluator<'_> {
                     cam.mesh = Some(m);
                     Ok(())
                 }
+                Tok::Block("normal", Value::Normal(n), _) => {
+                    cam.normal = Some(n);
+                    Ok(())
+                }
                 Tok::Block(_, Value::Transform(t), _) => {
                     cam.transform = Some(cam.transform.unwrap_or(Transform::IDENTITY).then(&t));
                     Ok(())
@@ -381,6 +386,7 @@ impl Evaluator<'_> {
             blur_min_samples: spec.blur_min_samples,
             confidence: spec.confidence,
             variance: spec.variance,
+            normal: spec.normal.clone(),
             mesh: spec.mesh.as_ref().map(|m| {
                 // Only the z of `location` and `direction` matter to a mesh
                 // camera: the offset of each ray from its face, and its sense.

@@ -95,6 +95,8 @@ pub struct CameraSpec {
     pub sized: bool,
     /// `mesh_camera { … }`, if given.
     pub mesh: Option<Arc<crate::scene::MeshCamera>>,
+    /// `normal { … }`, if given.
+    pub normal: Option<Arc<crate::scene::Normal>>,
 }
 
 impl Default for CameraSpec {
@@ -119,6 +121,7 @@ impl Default for CameraSpec {
             variance: 1.0 / 128.0,
             sized: false,
             mesh: None,
+            normal: None,
         }
     }
 }

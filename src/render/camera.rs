@@ -28,7 +28,10 @@ pub fn primary_ray(
     let sx = x / f64::from(width) - 0.5;
     let sy = 0.5 - y / f64::from(height);
     let (origin, dir) = pinhole(camera, sx, sy)?;
-    let dir = dir.normalize();
+    let dir = match &camera.normal {
+        Some(n) => super::pigment::perturb_camera_ray(n, dir.normalize(), sx, sy),
+        None => dir.normalize(),
+    };
     if camera.aperture <= 0.0 || camera.kind == CameraKind::Orthographic {
         return Some(Ray::new(origin, dir));
     }

@@ -88,6 +88,9 @@ pub struct Camera {
     /// `mesh_camera { … }`: rays from the faces of meshes instead of the
     /// projection (see [`MeshCamera`]).
     pub mesh: Option<std::sync::Arc<MeshCamera>>,
+    /// `normal { … }`: perturbs every camera ray's direction (see
+    /// `render::pigment::perturb_camera_ray`).
+    pub normal: Option<std::sync::Arc<super::Normal>>,
     /// Where the camera was written (default span for the default camera).
     pub span: Span,
 }
@@ -108,6 +111,7 @@ impl Default for Camera {
             confidence: 0.9,
             variance: 1.0 / 128.0,
             mesh: None,
+            normal: None,
             span: Span::default(),
         }
     }
