@@ -746,7 +746,6 @@ fn srgb_to_linear(c: f64) -> f64 {
 /// reported as unsupported rather than as unknown identifiers.
 const POV_KEYWORDS_NOT_YET: &[&str] = &[
     "cells",
-    "density_file",
     "facets",
     "omnimax",
     "pavement",

@@ -46,6 +46,7 @@ pub(crate) const PATTERNS: &[&str] = &[
     "image_pattern",
     "slope",
     "average",
+    "density_file",
 ];
 
 /// Pattern modifiers.
@@ -213,6 +214,7 @@ impl Evaluator<'_> {
             | "spiral2" | "mandel" | "julia" | "magnet" => self.shape_pattern(kw, c)?,
             "pigment_pattern" | "image_pattern" | "slope" => self.take_block_pattern(kw, c)?,
             "average" => PatternKind::Average,
+            "density_file" => self.density_file(c)?,
             _ => PatternKind::Dents,
         };
         spec.kind = Some(kind.clone());
@@ -509,5 +511,79 @@ impl Evaluator<'_> {
         }
         entries.sort_by(|a, b| a.0.total_cmp(&b.0));
         Ok(entries)
+    }
+}
+
+impl Evaluator<'_> {
+    /// `df3 "FILE" [interpolate N]` after `density_file`.
+    fn density_file(&mut self, c: &mut Cursor) -> R<PatternKind> {
+        match c.next() {
+            Some(Tok::Kw("df3", _)) => {}
+            Some(Tok::Kw(kw, span)) => {
+                return Err(Diagnostic::error(
+                    codes::UNSUPPORTED,
+                    span,
+                    format!("`density_file` reads the df3 format only, found `{kw}`"),
+                )
+                .with_help("convert the data to DF3: density_file df3 \"name.df3\"")
+                .into())
+            }
+            Some(other) => return Err(self.unexpected(c, &other, &["df3"])),
+            None => {
+                return Err(Diagnostic::error(
+                    codes::MISSING_VALUE,
+                    c.span,
+                    "`density_file` needs its format and file: `density_file df3 \"name.df3\"`",
+                )
+                .into())
+            }
+        }
+        let (v, span) = c.value("the DF3 file's name, a string")?;
+        let Value::Str(name) = v else {
+            return Err(Diagnostic::error(
+                codes::TYPE_MISMATCH,
+                span,
+                format!("the DF3 file's name must be a string, found {}", v.kind()),
+            )
+            .with_help("write the name in quotes: density_file df3 \"name.df3\"")
+            .into());
+        };
+        let mut interpolate = 0;
+        if let Some(Tok::Kw("interpolate", _)) = c.peek() {
+            c.next();
+            let (v, s) = c.value("the interpolation: 0 none, 1 trilinear, 2 tricubic")?;
+            let n = self.to_float(&v, s)?;
+            if ![0.0, 1.0, 2.0].contains(&n) {
+                return Err(Diagnostic::error(
+                    codes::OUT_OF_RANGE,
+                    s,
+                    format!("a density file's interpolate is 0, 1 or 2, found {n}"),
+                )
+                .with_help("0: nearest voxel, 1: trilinear, 2: tricubic")
+                .into());
+            }
+            interpolate = n as u8;
+        }
+        let path = self.data_file(&name, span, "density file")?;
+        let bytes = std::fs::read(&path).map_err(|e| {
+            Fail::from(Diagnostic::error(
+                codes::FILE_IO,
+                span,
+                format!("cannot read density file `{name}`: {e}"),
+            ))
+        })?;
+        let grid = crate::scene::DensityGrid::parse(&bytes, interpolate).map_err(|e| {
+            Fail::from(
+                Diagnostic::error(
+                    codes::FILE_IO,
+                    span,
+                    format!("`{name}` is not a DF3 file: {e}"),
+                )
+                .with_help(
+                    "DF3: three big-endian 16-bit sizes, then 1, 2 or 4 bytes per voxel, x fastest",
+                ),
+            )
+        })?;
+        Ok(PatternKind::DensityFile(Arc::new(grid)))
     }
 }

@@ -810,6 +810,12 @@ pub const DOCS: &[Doc] = &[
     ),
     kw("orthographic", "orthographic", "Projection: parallel rays."),
     kw(
+        "density_file",
+        "density_file df3 \"FILE\" [interpolate 0|1|2]",
+        "Pattern: values from a DF3 voxel file over the unit cube (0 outside); interpolate 1 trilinear, 2 tricubic.",
+    ),
+    kw("df3", "density_file df3 \"FILE\"", "The DF3 voxel format of a density_file."),
+    kw(
         "mesh_camera",
         "mesh_camera { RAYS DISTRIBUTION MESH… [smooth] }",
         "Camera whose rays start on the faces of meshes (POV-Ray 3.7): distribution 0 one mesh per ray, 1 all meshes as one, 2 meshes side by side, 3 by uv (texture baking).",

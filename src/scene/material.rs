@@ -304,6 +304,9 @@ pub enum PatternKind {
     /// `image_pattern { … }` (and a `bump_map`'s heights): a value read from an
     /// image.
     ImagePattern(Arc<ImagePattern>),
+    /// `density_file df3 "FILE" [interpolate N]`: a value read from a 3-D grid
+    /// filling the unit cube (see [`super::DensityGrid`]).
+    DensityFile(Arc<super::DensityGrid>),
     /// `average`: the entries of a pigment, normal or texture map averaged by
     /// their weights (the map values).
     Average,

@@ -9,6 +9,7 @@ mod animation;
 mod atmosphere;
 mod blob;
 mod camera;
+mod density;
 mod light;
 mod material;
 mod media;
@@ -21,6 +22,7 @@ pub use animation::{Timeline, DEFAULT_FPS};
 pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, SkySphere};
 pub use blob::{BlobComponent, BlobData, BlobKind};
 pub use camera::{Camera, CameraFace, CameraKind, CameraMesh, MeshCamera, UvGrid};
+pub use density::{DensityGrid, DF3_MAX_VOXELS};
 pub use light::{AreaLight, Beam, Light, LightKind};
 pub use material::{
     compose, Colour, Finish, ImageMap, Interior, Irid, Mapped, Normal, Pattern, PatternKind,

@@ -140,6 +140,7 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
         PatternKind::Checker | PatternKind::Hexagon | PatternKind::Brick { .. } => 0.0,
         PatternKind::PigmentPattern(pig) => grey(super::evaluate(pig, p)),
         PatternKind::ImagePattern(im) => super::image_map::value_at(im, p),
+        PatternKind::DensityFile(g) => g.value(p),
         PatternKind::Slope(s) => super::slope::value(s, p),
         PatternKind::Average | PatternKind::MaterialMap(_) => 0.0,
     }
@@ -297,7 +298,13 @@ pub fn value(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
         // A function's value of exactly 1 stays 1 (as POV-Ray 3.7 shows:
         // `average` of `function { … } color_map { … }` entries that reach 1
         // shows the map's top colour), other values wrap as gradient's do.
-        PatternKind::Function(_) if m.wave == Wave::Ramp && v * m.frequency + m.phase == 1.0 => 1.0,
+        // A density file's full voxels (1) show the top of the map too, and
+        // tricubic overshoots above 1 wrap (measured).
+        PatternKind::Function(_) | PatternKind::DensityFile(_)
+            if m.wave == Wave::Ramp && v * m.frequency + m.phase == 1.0 =>
+        {
+            1.0
+        }
         _ => wave(m.wave, v * m.frequency + m.phase),
     }
 }
