@@ -447,3 +447,49 @@ fn passing_straight_through_costs_no_trace_level() {
     let c = px[(2 * w + 2) as usize];
     assert!(close(c, [0.0; 3], 1e-3), "bent: {c:?}");
 }
+
+#[test]
+fn a_37_scene_scales_a_filtering_surface_s_own_light_by_one_minus_filter() {
+    // A filtering slab (ambient 1) over black, seen head on. POV-Ray 3.7
+    // (measured): with `#version 3.7` its own light is scaled by 1 - filter -
+    // transmit; without a version (or before 3.7) by 1 - filter·max(r, g, b) -
+    // transmit. The back face adds its light filtered by the front.
+    let scene = |version: &str| {
+        format!(
+            "{version}global_settings {{ assumed_gamma 1.0 }}\n\
+             camera {{ orthographic location <0, 0, -5> look_at 0 right x*2 up y*2 }}\n\
+             box {{ <-1, -1, -0.1>, <1, 1, 0.1> pigment {{ rgbf <0.4, 0.9, 0.5, 0.85> }}\n\
+             finish {{ ambient 1 diffuse 0 }} interior {{ ior 1.33 }} }}\n"
+        )
+    };
+    for (name, version, want) in [
+        ("filter_37", "#version 3.7;\n", [0.0804, 0.2383, 0.1069]),
+        ("filter_legacy", "", [0.1260, 0.3733, 0.1674]),
+    ] {
+        let (w, px) = render(name, &scene(version), 4, 4);
+        let c = px[(2 * w + 2) as usize];
+        assert!(close(c, want, 2e-4), "{name}: {c:?} want {want:?}");
+    }
+}
+
+#[test]
+fn a_ray_meeting_another_object_inside_a_fading_interior_is_not_faded() {
+    // A clear fading box (fade over 1 unit, power 2) seen from above, an
+    // ambient-lit floor below. POV-Ray 3.7 (measured): a floor halfway up
+    // inside the box shows at full brightness; one just below the box, reached
+    // after the ray leaves through the box's bottom, is faded by 1/(1 + 1²).
+    let scene = |floor: f64| {
+        format!(
+            "#version 3.7;\nglobal_settings {{ assumed_gamma 1.0 }}\n\
+             camera {{ orthographic location <0, 10, 0> look_at 0 right x*0.2 up z*0.2 }}\n\
+             plane {{ y, {floor} pigment {{ rgb 1 }} finish {{ ambient 1 diffuse 0 }} }}\n\
+             box {{ <-3, 0, -3>, <3, 1, 3> pigment {{ rgbt 1 }} finish {{ ambient 0 diffuse 0 }}\n\
+             interior {{ ior 1.0 fade_distance 1 fade_power 2 }} }}\n"
+        )
+    };
+    for (name, floor, want) in [("fade_inside", 0.5, 1.0), ("fade_below", -0.001, 0.5)] {
+        let (w, px) = render(name, &scene(floor), 4, 4);
+        let c = px[(2 * w + 2) as usize];
+        assert!(close(c, [want; 3], 2e-3), "{name}: {c:?} want {want}");
+    }
+}

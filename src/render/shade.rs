@@ -243,13 +243,20 @@ fn shade_texture(
         last_n = n;
         let f = &tex.finish;
         let colour = c.rgb;
-        // Filter counts in proportion to the colour's largest component (a
-        // dark filtering colour hides less of the surface's own light), as
-        // POV-Ray measures. Not clamped: POV-Ray lets `filter + transmit`
+        // In a 3.7 scene the surface's own light is scaled by 1 - filter -
+        // transmit; in an older one (or one without `#version`) filter counts
+        // in proportion to the colour's largest component (a dark filtering
+        // colour hides less of the surface's own light): both measured on
+        // POV-Ray 3.7. Not clamped: POV-Ray lets `filter + transmit`
         // above 1 make the opacity negative, so the surface's own light is
         // subtracted from the amplified light behind it (advanced/bwstripe.pov's
         // threshold lens; measured: rgb 0.5 transmit 2 over 0.6 gives 2·0.6 − 0.5).
-        let opacity = 1.0 - c.filter * colour.max_element() - c.transmit;
+        let filter_share = if world.global.legacy_filter {
+            colour.max_element()
+        } else {
+            1.0
+        };
+        let opacity = 1.0 - c.filter * filter_share - c.transmit;
         let mut layer = (f.ambient * world.global.ambient_light + f.emission) * colour * opacity;
         for light in 0..world.lights.len() {
             if let Some(inc) = lights::incident(world, light, p, geo_n, n, ctx) {
@@ -388,12 +395,19 @@ fn transmitted(
     // Fading applies to light that crossed the inside: rays leaving it now.
     let inside = (kind == RayKind::Camera) == entering;
     match s.interior {
+        // Only when the ray leaves through the object's own surface: a ray that
+        // meets another object inside (a floor through a glass block's bottom)
+        // is not faded, as POV-Ray 3.7 shows (measured: a floor halfway up a
+        // fading box is seen at full brightness, one just below it faded).
         Some(i) if inside && i.fade_distance > 0.0 && i.fade_power > 0.0 => {
-            let dist = world
-                .intersect(&next, eps, f64::INFINITY, kind)
-                .map_or(f64::INFINITY, |h| h.t);
-            let att = interior_fade(dist, i.fade_distance, i.fade_power);
-            colour * (DVec3::splat(att) + (1.0 - att) * i.fade_colour)
+            match world.intersect(&next, eps, f64::INFINITY, kind) {
+                Some(h) if h.prim == s.prim => {
+                    let att = interior_fade(h.t, i.fade_distance, i.fade_power);
+                    colour * (DVec3::splat(att) + (1.0 - att) * i.fade_colour)
+                }
+                Some(_) => colour,
+                None => colour * i.fade_colour,
+            }
         }
         _ => colour,
     }

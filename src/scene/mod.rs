@@ -83,6 +83,10 @@ pub struct GlobalSettings {
     /// gamma handling off, and the classic renderer writes the working values to
     /// the file as they are (unless `--gamma` is given).
     pub gamma_off: bool,
+    /// A scene of a version before 3.7, or of none: a filtering surface's own
+    /// light is scaled by `1 - filter·max(r, g, b) - transmit` instead of 3.7's
+    /// `1 - filter - transmit` (POV-Ray 3.7 measured both ways).
+    pub legacy_filter: bool,
     /// `max_trace_level`: deepest recursion of reflected rays (default 5).
     pub max_trace_level: u32,
     /// `adc_bailout`: rays whose contribution falls below this are not traced further
@@ -103,6 +107,7 @@ impl Default for GlobalSettings {
             ambient_light: DVec3::ONE,
             assumed_gamma: None,
             gamma_off: false,
+            legacy_filter: false,
             max_trace_level: 5,
             adc_bailout: 1.0 / 255.0,
             noise_generator: 2,
