@@ -2,30 +2,11 @@
 //! sphere's function looks like the `sphere` (alone and in CSG), and the
 //! `function` pattern of `x` is `gradient x`.
 
-use std::path::PathBuf;
-use std::process::Command;
+mod render_support;
 
 /// Renders `scene` at 48×36 with linear 16-bit output; pixels in 0..1.
 fn render(name: &str, scene: &str) -> Vec<[f64; 3]> {
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("render_isosurface");
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let src = dir.join(format!("{name}.rts"));
-    let out = dir.join(format!("{name}.png"));
-    std::fs::write(&src, scene).expect("write scene");
-    let status = Command::new(env!("CARGO_BIN_EXE_rts"))
-        .arg("render")
-        .arg(&src)
-        .arg("-o")
-        .arg(&out)
-        .args(["-W", "48", "-H", "36", "-q"])
-        .args(["--gamma", "1.0", "--bit-depth", "16"])
-        .status()
-        .expect("run rts");
-    assert!(status.success(), "render {name}");
-    let img = image::open(&out).expect("read png").to_rgb16();
-    img.pixels()
-        .map(|p| [0, 1, 2].map(|i| f64::from(p[i]) / 65535.0))
-        .collect()
+    render_support::render_source("render_isosurface", name, scene, 48, 36)
 }
 
 /// The mean absolute difference of two pictures and how many pixels differ

@@ -2,8 +2,9 @@
 //! `image_pattern`, `slope`, `normal_map`, `slope_map`, `bump_map`,
 //! `material_map` and `interior_texture`.
 
+mod render_support;
+
 use std::path::PathBuf;
-use std::process::Command;
 
 fn dir() -> PathBuf {
     let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("render_pattern_blending");
@@ -13,23 +14,7 @@ fn dir() -> PathBuf {
 
 /// Renders `scene` at `w`×`h` with linear output and returns its pixels in 0..1.
 fn render(name: &str, scene: &str, w: u32, h: u32) -> Vec<[f64; 3]> {
-    let src = dir().join(format!("{name}.rts"));
-    let out = dir().join(format!("{name}.png"));
-    std::fs::write(&src, scene).expect("write scene");
-    let status = Command::new(env!("CARGO_BIN_EXE_rts"))
-        .arg("render")
-        .arg(&src)
-        .arg("-o")
-        .arg(&out)
-        .args(["-W", &w.to_string(), "-H", &h.to_string(), "-q"])
-        .args(["--gamma", "1.0", "--bit-depth", "16"])
-        .status()
-        .expect("run rts");
-    assert!(status.success(), "render {name}");
-    let img = image::open(&out).expect("read png").to_rgb16();
-    img.pixels()
-        .map(|p| [0, 1, 2].map(|i| f64::from(p[i]) / 65535.0))
-        .collect()
+    render_support::render_source("render_pattern_blending", name, scene, w, h)
 }
 
 fn close(a: [f64; 3], b: [f64; 3], tol: f64) -> bool {
