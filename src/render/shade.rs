@@ -341,6 +341,16 @@ fn shade_texture(
     {
         return out;
     }
+    // Total internal reflection returns all the light it reflects, whatever
+    // the surface's filter and transmit (measured on POV-Ray 3.7: a clear box
+    // with transmit 0.9 shows the light it reflects inside unscaled).
+    let eta = if entering { 1.0 / ior } else { ior };
+    let tir = ior != 1.0 && refract(d, last_n, eta).is_none();
+    let (through, next_weight) = if tir {
+        (DVec3::ONE, weight)
+    } else {
+        (through, next_weight)
+    };
     out + through * transmitted(world, s, d, last_n, entering, ior, level, next_weight, ctx)
 }
 
