@@ -510,3 +510,27 @@ fn total_internal_reflection_returns_all_its_light() {
     let c = px[(20 * w + 12) as usize];
     assert!(close(c, [0.2283, 0.3606, 0.7296], 2e-3), "{c:?}");
 }
+
+#[test]
+fn cells_hold_one_value_per_unit_cube() {
+    // `cells` over x in [0, 4): four unit cells, each one flat grey in [0, 1),
+    // not all the same (the cells are POV-Ray's; the values are rts's own).
+    let scene = "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n\
+        camera { orthographic location <2, 0.5, -5> look_at <2, 0.5, 0> right x*4 up y*1 }\n\
+        plane { z, 0.5 pigment { cells color_map { [0 rgb 0] [1 rgb 1] } } finish { ambient 1 diffuse 0 } }\n";
+    let (_, px) = render("cells", scene, 16, 4);
+    let cell: Vec<f64> = (0..4).map(|k| px[4 * k][0]).collect();
+    for k in 0..4 {
+        for i in 0..4 {
+            assert!(
+                (px[4 * k + i][0] - cell[k]).abs() < 1e-9,
+                "cell {k} not flat"
+            );
+        }
+        assert!((0.0..1.0).contains(&cell[k]), "{cell:?}");
+    }
+    assert!(
+        cell.windows(2).any(|w| (w[0] - w[1]).abs() > 0.01),
+        "{cell:?}"
+    );
+}

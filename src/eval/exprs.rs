@@ -745,7 +745,6 @@ fn srgb_to_linear(c: f64) -> f64 {
 /// implement yet and does not reserve: met where a name is expected, they are
 /// reported as unsupported rather than as unknown identifiers.
 const POV_KEYWORDS_NOT_YET: &[&str] = &[
-    "cells",
     "facets",
     "omnimax",
     "pavement",

@@ -47,6 +47,7 @@ pub(crate) const PATTERNS: &[&str] = &[
     "slope",
     "average",
     "density_file",
+    "cells",
 ];
 
 /// Pattern modifiers.
@@ -215,6 +216,7 @@ impl Evaluator<'_> {
             "pigment_pattern" | "image_pattern" | "slope" => self.take_block_pattern(kw, c)?,
             "average" => PatternKind::Average,
             "density_file" => self.density_file(c)?,
+            "cells" => PatternKind::Cells,
             _ => PatternKind::Dents,
         };
         spec.kind = Some(kind.clone());

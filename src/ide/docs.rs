@@ -810,6 +810,11 @@ pub const DOCS: &[Doc] = &[
     ),
     kw("orthographic", "orthographic", "Projection: parallel rays."),
     kw(
+        "cells",
+        "cells",
+        "Pattern: one random value for each unit cube.",
+    ),
+    kw(
         "density_file",
         "density_file df3 \"FILE\" [interpolate 0|1|2]",
         "Pattern: values from a DF3 voxel file over the unit cube (0 outside); interpolate 1 trilinear, 2 tricubic.",

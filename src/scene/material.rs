@@ -310,6 +310,9 @@ pub enum PatternKind {
     /// `average`: the entries of a pigment, normal or texture map averaged by
     /// their weights (the map values).
     Average,
+    /// `cells`: one random value in [0, 1) for each unit cube (rts's own hash of
+    /// the cube, so the values differ from POV-Ray's; the cells are the same).
+    Cells,
     /// `slope { DIRECTION [, LO, HI] [altitude DIRECTION [, LO, HI]] }`: how
     /// far the surface normal faces a direction (and how high the point is).
     Slope(Box<SlopeSpec>),

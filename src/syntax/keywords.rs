@@ -42,6 +42,7 @@ pub const KEYWORDS: &[&str] = &[
     "camera_path",
     "catmull_rom",
     "caustics",
+    "cells",
     "checker",
     "circular",
     "clipped_by",

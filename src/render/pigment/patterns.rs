@@ -62,6 +62,7 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
     let g = m.noise_generator;
     match kind {
         PatternKind::Gradient(v) => p.dot(*v),
+        PatternKind::Cells => cell_value(p.floor()),
         PatternKind::Radial => {
             let a = (-p.z).atan2(p.x);
             (a / TAU).rem_euclid(1.0)
@@ -378,6 +379,22 @@ pub fn value_gradient(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<D
         PatternKind::Gradient(dir) => Some(*dir * m.frequency),
         _ => None,
     }
+}
+
+/// A value in [0, 1) for the unit cube with corner `c` (integer coordinates):
+/// a 64-bit mix of the three indices (the `cells` pattern).
+fn cell_value(c: DVec3) -> f64 {
+    let mut h: u64 = 0x2545_F491_4F6C_DD1D;
+    for k in [c.x, c.y, c.z] {
+        h = (h ^ k as i64 as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        h ^= h >> 29;
+    }
+    h ^= h >> 33;
+    h = h.wrapping_mul(0xFF51_AFD7_ED55_8CCD);
+    h ^= h >> 33;
+    h = h.wrapping_mul(0xC4CE_B9FE_1A85_EC53);
+    h ^= h >> 33;
+    (h >> 11) as f64 / (1u64 << 53) as f64
 }
 
 #[cfg(test)]
