@@ -58,7 +58,7 @@ impl Evaluator<'_> {
             match tok {
                 Tok::Block(_, Value::Object(o), span) | Tok::Val(Value::Object(o), span) => {
                     objects += 1;
-                    match faces(&o) {
+                    match camera_mesh(&o) {
                         Some(f) => meshes.push(f),
                         None => self.report(
                             Diagnostic::error(
@@ -132,7 +132,7 @@ impl Evaluator<'_> {
 }
 
 /// A mesh object as a camera mesh; `None` for other objects.
-fn faces(o: &Object) -> Option<CameraMesh> {
+fn camera_mesh(o: &Object) -> Option<CameraMesh> {
     let Shape::Mesh(m) = &o.shape else {
         return None;
     };

@@ -352,7 +352,7 @@ impl Renderer<'_> {
             let (mut sum, mut n) = (DVec3::ZERO, 0u32);
             for r in 0..mesh.rays_per_pixel {
                 if let Some(ray) = camera::mesh_ray(mesh, x, y, self.w, self.h, r) {
-                    sum += self.trace_camera_ray(&ray, sampler, st);
+                    sum += self.trace_camera_ray(ray, sampler, st);
                     n += 1;
                 }
             }
@@ -365,13 +365,12 @@ impl Renderer<'_> {
         let Some(ray) = primary_ray(&world.camera, x, y, self.w, self.h, sampler) else {
             return DVec3::ZERO;
         };
-        self.trace_camera_ray(&ray, sampler, st)
+        self.trace_camera_ray(ray, sampler, st)
     }
 
     /// The colour seen along camera ray `ray`.
-    fn trace_camera_ray(&self, ray: &Ray, sampler: &mut Sampler, st: &mut RenderStats) -> DVec3 {
+    fn trace_camera_ray(&self, ray: Ray, sampler: &mut Sampler, st: &mut RenderStats) -> DVec3 {
         let world = self.world;
-        let ray = *ray;
         st.rays.camera += 1;
         if self.settings.pass != Pass::Beauty {
             return passes::sample(world, &ray, self.settings.pass, self.max_depth);

@@ -341,43 +341,69 @@ fn shade_texture(
     {
         return out;
     }
+    let (dir, kind) = bend(d, last_n, entering, ior);
     // Total internal reflection returns all the light it reflects, whatever
     // the surface's filter and transmit (measured on POV-Ray 3.7: a clear box
     // with transmit 0.9 shows the light it reflects inside unscaled).
-    let eta = if entering { 1.0 / ior } else { ior };
-    let tir = ior != 1.0 && refract(d, last_n, eta).is_none();
-    let (through, next_weight) = if tir {
+    let (through, next_weight) = if kind == RayKind::Reflected {
         (DVec3::ONE, weight)
     } else {
         (through, next_weight)
     };
-    out + through * transmitted(world, s, d, last_n, entering, ior, level, next_weight, ctx)
+    let next = Onward {
+        dir,
+        kind,
+        entering,
+        passes,
+    };
+    out + through * transmitted(world, s, next, level, next_weight, ctx)
 }
 
-/// Light arriving through the surface at `s` along unit direction `d` (`n`: the
-/// shading normal facing the viewer): refracted by `ior`, or reflected back
-/// (total internal reflection), and faded by the interior over the distance it
-/// travels inside.
+/// Where a ray through a surface goes on: along unit direction `d` unbent when
+/// `ior` is 1, else refracted (a camera-kind ray) or, under total internal
+/// reflection, reflected (`n`: the shading normal facing the viewer).
+fn bend(d: DVec3, n: DVec3, entering: bool, ior: f64) -> (DVec3, RayKind) {
+    if ior == 1.0 {
+        return (d, RayKind::Camera);
+    }
+    let eta = if entering { 1.0 / ior } else { ior };
+    match refract(d, n, eta) {
+        Some(t) => (t, RayKind::Camera),
+        None => (d - 2.0 * d.dot(n) * n, RayKind::Reflected),
+    }
+}
+
+/// How a ray goes on through a surface (see [`transmitted`]).
+struct Onward {
+    /// Its direction, from [`bend`].
+    dir: DVec3,
+    /// Camera for a ray passing through, Reflected under total internal
+    /// reflection.
+    kind: RayKind,
+    /// Whether the ray entered the object at the surface.
+    entering: bool,
+    /// Whether it passes straight through without costing a trace level
+    /// (see [`MAX_PASSES`]).
+    passes: bool,
+}
+
+/// Light arriving through the surface at `s` along the ray going on as `onward`
+/// (refracted, or reflected back by total internal reflection), faded by the
+/// interior over the distance it travels inside.
 fn transmitted(
     world: &World,
     s: &SurfaceHit,
-    d: DVec3,
-    n: DVec3,
-    entering: bool,
-    ior: f64,
+    onward: Onward,
     level: u32,
     weight: f64,
     ctx: &mut TraceCtx,
 ) -> DVec3 {
-    let eta = if entering { 1.0 / ior } else { ior };
-    let (dir, kind) = if ior == 1.0 {
-        (d, RayKind::Camera)
-    } else {
-        match refract(d, n, eta) {
-            Some(t) => (t, RayKind::Camera),
-            None => (d - 2.0 * d.dot(n) * n, RayKind::Reflected),
-        }
-    };
+    let Onward {
+        dir,
+        kind,
+        entering,
+        passes,
+    } = onward;
     let (next, eps) = Ray::secondary(s.p, s.geo_normal, dir);
     ctx.stats.transmitted += 1;
     // A ray passing through the surface enters or leaves the object.
@@ -390,7 +416,6 @@ fn transmitted(
         }
         outer
     });
-    let passes = ior == 1.0 && ctx.passes < MAX_PASSES;
     let colour = if passes {
         ctx.passes += 1;
         let c = trace(world, &next, eps, kind, level, weight, ctx);

@@ -263,11 +263,9 @@ impl UvGrid {
             return None;
         }
         let cell = |t: f64| ((t * self.size as f64).floor() as usize).min(self.size - 1);
-        let mut best: Option<((u32, u32), [f64; 3])> = None;
+        // A cell lists its faces in mesh order (see `new`): the first that
+        // holds `uv` is the one.
         for &(m, f) in &self.cells[cell(uv.y) * self.size + cell(uv.x)] {
-            if best.is_some_and(|(k, _)| k <= (m, f)) {
-                continue;
-            }
             let Some([a, b, c]) = meshes[m as usize].uv(f as usize) else {
                 continue;
             };
@@ -280,9 +278,9 @@ impl UvGrid {
             let wa = 1.0 - wb - wc;
             const EDGE: f64 = -1e-12;
             if wa >= EDGE && wb >= EDGE && wc >= EDGE {
-                best = Some(((m, f), [wa, wb, wc]));
+                return Some((meshes[m as usize].face(f as usize), [wa, wb, wc]));
             }
         }
-        best.map(|((m, f), w)| (meshes[m as usize].face(f as usize), w))
+        None
     }
 }
