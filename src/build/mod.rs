@@ -46,6 +46,8 @@ pub enum RayKind {
     Shadow,
     /// A probe from the scene language (`trace`): every object is seen.
     Probe,
+    /// Radiosity's gathering: `no_radiosity` objects are invisible.
+    Radiosity,
 }
 
 impl RayKind {
@@ -57,6 +59,7 @@ impl RayKind {
             RayKind::Reflected => !flags.no_reflection,
             RayKind::Shadow => !flags.no_shadow,
             RayKind::Probe => true,
+            RayKind::Radiosity => !flags.no_radiosity,
         }
     }
 }
@@ -202,6 +205,9 @@ fn or_flags(a: ObjectFlags, b: ObjectFlags) -> ObjectFlags {
         inverse: a.inverse != b.inverse,
         hollow: a.hollow || b.hollow,
         double_illuminate: a.double_illuminate || b.double_illuminate,
+        no_radiosity: a.no_radiosity || b.no_radiosity,
+        // A CSG child's own importance wins over its parent's.
+        importance: b.importance.or(a.importance),
     }
 }
 

@@ -143,12 +143,17 @@ impl Report<'_> {
             }
         );
         s += &format!(
-            "  rays: {} total, {} camera, {} reflected, {} transmitted, {} shadow; {:.2} Mrays/s\n",
+            "  rays: {} total, {} camera, {} reflected, {} transmitted, {} shadow{}; {:.2} Mrays/s\n",
             r.total(),
             r.camera,
             r.reflected,
             r.transmitted,
             r.shadow,
+            if r.radiosity > 0 {
+                format!(", {} radiosity", r.radiosity)
+            } else {
+                String::new()
+            },
             self.mrays_per_s()
         );
         s += &format!(
@@ -207,6 +212,7 @@ impl Report<'_> {
                 "reflected": r.reflected,
                 "transmitted": r.transmitted,
                 "shadow": r.shadow,
+                "radiosity": r.radiosity,
                 "total": r.total(),
             },
             "mrays_per_s": self.mrays_per_s(),

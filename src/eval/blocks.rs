@@ -49,6 +49,7 @@ pub(crate) const BLOCKS: &[&str] = &[
     "animation",
     "camera_path",
     "path_tracing",
+    "radiosity",
     "function",
     "contained_by",
     "warp",
@@ -65,7 +66,7 @@ pub(crate) const BLOCKS: &[&str] = &[
 ];
 
 /// POV-Ray blocks that a later release implements.
-const LATER_BLOCKS: &[&str] = &["photons", "radiosity", "light_group"];
+const LATER_BLOCKS: &[&str] = &["photons", "light_group"];
 
 /// Whether `k` opens a block this release evaluates.
 pub(crate) fn is_evaluated_block(k: &str) -> bool {
@@ -182,6 +183,7 @@ impl Evaluator<'_> {
             "density" => Value::Pigment(std::sync::Arc::new(self.density(&mut c)?)),
             "tiles" => Value::Texture(std::sync::Arc::new(self.tiles(&mut c)?)),
             "material" => Value::Material(std::sync::Arc::new(self.material(&mut c)?)),
+            "radiosity" => Value::Radiosity(std::sync::Arc::new(self.radiosity_block(&mut c)?)),
             "path_tracing" => {
                 self.path_tracing(&mut c)?;
                 return Ok(None);

@@ -57,6 +57,7 @@ pub(crate) const GLOBAL_ITEMS: &[&str] = &[
     "hf_gray_16",
     "path_tracing",
     "mm_per_unit",
+    "radiosity",
 ];
 
 /// An out-of-range camera value.
@@ -485,8 +486,21 @@ impl Evaluator<'_> {
                     self.scene.global.adc_bailout = n;
                     Ok(())
                 }),
-                Tok::Block(kw @ ("radiosity" | "photons"), _, span)
-                | Tok::Kw(kw @ ("radiosity" | "photons"), span) => Err(Diagnostic::error(
+                Tok::Block("radiosity", Value::Radiosity(b), span) => match b.importance {
+                    Some((_, at)) => Err(Diagnostic::error(
+                        codes::UNEXPECTED_ITEM,
+                        at,
+                        "`importance` belongs in an object's `radiosity { }`, not in global_settings",
+                    )
+                    .with_secondary(span, "in this global radiosity block")
+                    .with_help("move it into the object: sphere { … radiosity { importance 0.5 } }")
+                    .into()),
+                    None => {
+                        self.scene.global.radiosity = Some(b.settings);
+                        Ok(())
+                    }
+                },
+                Tok::Block(kw @ "photons", _, span) | Tok::Kw(kw @ "photons", span) => Err(Diagnostic::error(
                     codes::UNSUPPORTED,
                     span,
                     format!("`{kw}` is not implemented in rts yet"),

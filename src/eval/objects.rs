@@ -27,6 +27,8 @@ pub(crate) const OBJECT_MODIFIERS: &[&str] = &[
     "no_shadow",
     "no_image",
     "no_reflection",
+    "no_radiosity",
+    "radiosity",
     "inverse",
     "hollow",
     "double_illuminate",
@@ -434,6 +436,22 @@ impl Evaluator<'_> {
             Tok::Kw("no_shadow", _) => obj.flags.no_shadow = true,
             Tok::Kw("no_image", _) => obj.flags.no_image = true,
             Tok::Kw("no_reflection", _) => obj.flags.no_reflection = true,
+            Tok::Kw("no_radiosity", _) => obj.flags.no_radiosity = true,
+            Tok::Block("radiosity", Value::Radiosity(b), span) => {
+                if let Some(at) = b.global_item {
+                    return Err(Diagnostic::error(
+                        codes::UNEXPECTED_ITEM,
+                        at,
+                        "an object's `radiosity { }` takes only `importance`",
+                    )
+                    .with_secondary(span, "in this object's radiosity block")
+                    .with_help("radiosity settings go in global_settings { radiosity { … } }")
+                    .into());
+                }
+                if let Some((x, _)) = b.importance {
+                    obj.flags.importance = Some((x * 10_000.0).round().clamp(1.0, 10_000.0) as u16);
+                }
+            }
             Tok::Kw("inverse", _) => obj.flags.inverse = !obj.flags.inverse,
             Tok::Kw(kw @ ("hollow" | "double_illuminate" | "sturm"), _) => {
                 // `sturm` is accepted: the torus solver is always the careful one.

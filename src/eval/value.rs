@@ -151,6 +151,8 @@ pub enum Value {
     Camera(Arc<CameraSpec>),
     /// A `mesh_camera { … }` block, inside a camera.
     MeshCamera(Arc<crate::scene::MeshCamera>),
+    /// A `radiosity { … }` block: global settings or an object's importance.
+    Radiosity(Arc<crate::scene::RadiosityBlock>),
     /// A light source.
     Light(Arc<Light>),
     /// A `sky_sphere { … }`.
@@ -221,6 +223,7 @@ impl Value {
             Value::Finish(_) => "a finish",
             Value::Camera(_) => "a camera",
             Value::MeshCamera(_) => "a mesh_camera block",
+            Value::Radiosity(_) => "a radiosity block",
             Value::Light(_) => "a light source",
             Value::SkySphere(_) => "a sky_sphere",
             Value::Fog(_) => "a fog",

@@ -96,6 +96,7 @@ pub fn block_keywords(block: &str) -> Option<Vec<&'static str>> {
         "light_source" => LIGHT_ITEMS.to_vec(),
         "global_settings" => GLOBAL_ITEMS.to_vec(),
         "path_tracing" => super::path_tracing::PATH_ITEMS.to_vec(),
+        "radiosity" => super::radiosity::RADIOSITY_ITEMS.to_vec(),
         "sky_sphere" => SKY_ITEMS.to_vec(),
         "fog" => FOG_ITEMS.to_vec(),
         "media" => super::media::MEDIA_ITEMS.to_vec(),

@@ -1125,7 +1125,86 @@ pub const DOCS: &[Doc] = &[
         "turb_depth D",
         "Fog turbulence: where along the ray it is taken (0 camera, 1 surface; default 0.5).",
     ),
-    later("radiosity", "radiosity { … }", "Indirect diffuse lighting."),
+    kw(
+        "radiosity",
+        "global_settings { radiosity { count 35 error_bound 1.8 recursion_limit 2 } }",
+        "Indirect diffuse light gathered from the surroundings (replaces `ambient`); in an object, `radiosity { importance F }`.",
+    ),
+    kw(
+        "always_sample",
+        "radiosity { always_sample on }",
+        "radiosity: gather new values in the final pass where the pretrace left none close enough (default off).",
+    ),
+    kw(
+        "brightness",
+        "radiosity { brightness 1 }",
+        "radiosity: multiplies the gathered light (default 1).",
+    ),
+    kw(
+        "count",
+        "radiosity { count 35 [, POOL] }",
+        "radiosity: rays gathered per new value (default 35); optional pool of directions drawn from.",
+    ),
+    kw(
+        "error_bound",
+        "radiosity { error_bound 1.8 }",
+        "radiosity: how far values are reused; lower is more accurate and slower (default 1.8).",
+    ),
+    kw(
+        "gray_threshold",
+        "radiosity { gray_threshold 0 }",
+        "radiosity: 0 keeps the gathered colour, 1 makes it grey (default 0).",
+    ),
+    kw(
+        "low_error_factor",
+        "radiosity { low_error_factor 0.5 }",
+        "radiosity: the pretrace uses error_bound times this (default 0.5).",
+    ),
+    kw(
+        "max_sample",
+        "radiosity { max_sample 2 }",
+        "radiosity: brightest a gathered value may be, colour kept (default: no limit).",
+    ),
+    kw(
+        "maximum_reuse",
+        "radiosity { maximum_reuse 0.2 }",
+        "radiosity: largest reuse radius, a fraction of the distance from the camera (default 0.2).",
+    ),
+    kw(
+        "minimum_reuse",
+        "radiosity { minimum_reuse 0.015 }",
+        "radiosity: smallest reuse radius, a fraction of the distance from the camera (default 0.015).",
+    ),
+    kw(
+        "nearest_count",
+        "radiosity { nearest_count 5 }",
+        "radiosity: the pretrace gathers where fewer values than this can be blended (1 to 20, default 5).",
+    ),
+    kw(
+        "pretrace_start",
+        "radiosity { pretrace_start 0.08 }",
+        "radiosity: block size of the first pretrace pass, a fraction of the image (default 0.08).",
+    ),
+    kw(
+        "pretrace_end",
+        "radiosity { pretrace_end 0.04 }",
+        "radiosity: block size of the last pretrace pass (default 0.04); passes halve the size.",
+    ),
+    kw(
+        "recursion_limit",
+        "radiosity { recursion_limit 2 }",
+        "radiosity: bounces of diffuse light (1 to 20, default 2).",
+    ),
+    kw(
+        "importance",
+        "sphere { … radiosity { importance 0.5 } }",
+        "radiosity: the share of gathering rays that hit this object and are computed (the rest are weighted in).",
+    ),
+    kw(
+        "no_radiosity",
+        "sphere { … no_radiosity }",
+        "The object is invisible to radiosity's gathering rays.",
+    ),
     later("photons", "photons { … }", "Photon mapping for caustics."),
     kw(
         "media",

@@ -17,6 +17,7 @@ mod media;
 mod passes;
 pub mod path;
 pub(crate) mod pigment;
+pub mod radiosity;
 mod sampler;
 mod shade;
 mod stats;
@@ -166,6 +167,26 @@ pub fn render_with(
     let crop = resolve_crop(settings, w, h);
     let (cw, ch) = (crop.x1 - crop.x0, crop.y1 - crop.y0);
     let sampling = settings.sampling;
+    // Radiosity: the pretrace fills the cache the render then reads.
+    let mut pretrace_rays = RayStats::default();
+    let cache = match (world.global.radiosity, settings.pass) {
+        (Some(_), Pass::Beauty) if cw > 0 && ch > 0 => Some(radiosity::pretrace(
+            world,
+            (w, h),
+            &crop,
+            (settings.seed, settings.frame),
+            &mut pretrace_rays,
+        )),
+        _ => None,
+    };
+    let rad_state = cache.as_ref().and_then(|cache| {
+        Some(radiosity::State {
+            settings: world.global.radiosity?,
+            cache,
+            eye: world.camera.location,
+            pretrace: false,
+        })
+    });
     let r = Renderer {
         world,
         w,
@@ -173,6 +194,7 @@ pub fn render_with(
         settings,
         max_depth: 0.0,
         blur_z: focal_blur::quantile(world.camera.confidence),
+        radiosity: rad_state.as_ref(),
     };
     let max_depth = match settings.pass {
         Pass::Depth { max: Some(m) } => m,
@@ -197,6 +219,7 @@ pub fn render_with(
     };
     let mut pixels = vec![DVec3::ZERO; cw as usize * ch as usize];
     let mut stats = RenderStats::default();
+    stats.rays += pretrace_rays;
     if cw == 0 || ch == 0 {
         return Rendered {
             film: Film {
@@ -287,6 +310,8 @@ struct Renderer<'a> {
     max_depth: f64,
     /// The normal quantile of the camera's focal-blur `confidence`.
     blur_z: f64,
+    /// Radiosity's cache, read-only during the render.
+    radiosity: Option<&'a radiosity::State<'a>>,
 }
 
 impl Renderer<'_> {
@@ -384,6 +409,8 @@ impl Renderer<'_> {
                 media::MediaPath::default()
             },
             passes: 0,
+            radiosity: self.radiosity,
+            rad: radiosity::Local::default(),
         };
         trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0, &mut ctx)
     }
@@ -469,7 +496,7 @@ impl Renderer<'_> {
 }
 
 /// The working-space colour of pixel (`i`, `j`), `j = 0` at the top, from one ray
-/// through its centre.
+/// through its centre (radiosity, which needs its pretrace, left out).
 pub fn render_pixel(world: &World, i: u32, j: u32, width: u32, height: u32) -> DVec3 {
     let settings = Settings::default();
     let r = Renderer {
@@ -479,6 +506,7 @@ pub fn render_pixel(world: &World, i: u32, j: u32, width: u32, height: u32) -> D
         settings: &settings,
         max_depth: 0.0,
         blur_z: focal_blur::quantile(world.camera.confidence),
+        radiosity: None,
     };
     r.centre(i, j, &mut RenderStats::default())
 }

@@ -23,6 +23,10 @@ pub struct TraceCtx<'a> {
     /// Surfaces passed straight through (no change of `ior`) on the way to
     /// the ray being traced; see [`MAX_PASSES`].
     pub passes: u32,
+    /// Radiosity's cache and phase, when the scene has `radiosity { }`.
+    pub radiosity: Option<&'a super::radiosity::State<'a>>,
+    /// Which radiosity bounce this ray serves, and what the pretrace gathered.
+    pub rad: super::radiosity::Local,
 }
 
 /// How many surfaces a ray may pass straight through (transmitted without a
@@ -115,7 +119,20 @@ pub fn trace(
     weight: f64,
     ctx: &mut TraceCtx,
 ) -> DVec3 {
-    let (colour, depth) = match world.intersect(ray, t_min, f64::INFINITY, kind) {
+    let hit = world.intersect(ray, t_min, f64::INFINITY, kind);
+    trace_found(world, ray, hit, level, weight, ctx)
+}
+
+/// [`trace`] once the nearest hit along `ray` (if any) is known.
+pub fn trace_found(
+    world: &World,
+    ray: &Ray,
+    hit: Option<crate::build::Hit>,
+    level: u32,
+    weight: f64,
+    ctx: &mut TraceCtx,
+) -> DVec3 {
+    let (colour, depth) = match hit {
         None => (atmosphere::sky(world, ray.dir), atmosphere::MISS_DISTANCE),
         Some(hit) => {
             let surface = world.surface(ray, &hit);
@@ -126,7 +143,8 @@ pub fn trace(
         return atmosphere::apply_fog(&world.atmosphere, ray, depth, colour);
     }
     // Media and fog act only where every object the ray is in is hollow.
-    let colour = if world.has_media {
+    let skip_media = ctx.radiosity.is_some_and(|r| r.skips_media(&ctx.rad));
+    let colour = if world.has_media && !skip_media {
         media::along(world, ray, depth, colour, ctx)
     } else {
         colour
@@ -234,6 +252,8 @@ fn shade_texture(
     let mut through = DVec3::ONE;
     let mut conserve = DVec3::ONE;
     let mut last_n = facing(s.normal);
+    // Radiosity's gathered light, looked up once for all layers.
+    let mut gathered: Option<DVec3> = None;
     for tex in layers(tex) {
         let c = pigment::evaluate_uv(&tex.pigment, tp, s.uv);
         let n = match &tex.normal {
@@ -257,7 +277,46 @@ fn shade_texture(
             1.0
         };
         let opacity = 1.0 - c.filter * filter_share - c.transmit;
-        let mut layer = (f.ambient * world.global.ambient_light + f.emission) * colour * opacity;
+        let ambient = match ctx.radiosity {
+            // Radiosity replaces `ambient` with the gathered light times
+            // `diffuse` (a 3.7 scene's `ambient` then counts for nothing; an
+            // older scene's still adds; both measured on POV-Ray 3.7).
+            Some(rs) => {
+                let legacy = if world.global.legacy_ambient {
+                    f.ambient * world.global.ambient_light
+                } else {
+                    DVec3::ZERO
+                };
+                if f.diffuse > 0.0 && colour != DVec3::ZERO && opacity != 0.0 {
+                    let e = match gathered {
+                        Some(e) => e,
+                        None => {
+                            let rn = if rs.settings.normal {
+                                n
+                            } else {
+                                facing(s.normal)
+                            };
+                            let e = super::radiosity::irradiance(
+                                world,
+                                rs,
+                                p,
+                                facing(geo_n),
+                                rn,
+                                level,
+                                ctx,
+                            );
+                            gathered = Some(e);
+                            e
+                        }
+                    };
+                    legacy + f.diffuse * e
+                } else {
+                    legacy
+                }
+            }
+            None => f.ambient * world.global.ambient_light,
+        };
+        let mut layer = (ambient + f.emission) * colour * opacity;
         for light in 0..world.lights.len() {
             if let Some(inc) = lights::incident(world, light, p, geo_n, n, ctx) {
                 layer += direct(

@@ -14,12 +14,14 @@ pub struct RayStats {
     pub transmitted: u64,
     /// Shadow rays towards lights.
     pub shadow: u64,
+    /// Radiosity's gathering rays.
+    pub radiosity: u64,
 }
 
 impl RayStats {
     /// All rays together.
     pub fn total(&self) -> u64 {
-        self.camera + self.reflected + self.transmitted + self.shadow
+        self.camera + self.reflected + self.transmitted + self.shadow + self.radiosity
     }
 }
 
@@ -29,5 +31,6 @@ impl AddAssign for RayStats {
         self.reflected += o.reflected;
         self.transmitted += o.transmitted;
         self.shadow += o.shadow;
+        self.radiosity += o.radiosity;
     }
 }

@@ -15,6 +15,7 @@ mod material;
 mod media;
 mod object;
 mod path;
+mod radiosity;
 mod transform;
 mod warp;
 
@@ -33,6 +34,7 @@ pub use material::{ImagePattern, ImageUse, NormalBlend, SlopeSpec};
 pub use media::{Media, Scattering, ScatteringKind};
 pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape, TextData};
 pub use path::{PathTracing, PixelFilter};
+pub use radiosity::{Radiosity, RadiosityBlock};
 pub use transform::Transform;
 pub use warp::{Fractal, FractalKind, MappingWarp, Warp, WarpStep};
 
@@ -99,6 +101,12 @@ pub struct GlobalSettings {
     pub number_of_waves: u8,
     /// `path_tracing { … }` (rts): render with the path tracer, with these settings.
     pub path_tracing: Option<PathTracing>,
+    /// `radiosity { … }`: gather indirect diffuse light (the classic renderer).
+    pub radiosity: Option<Radiosity>,
+    /// The scene's `#version` is before 3.7 (or not given): under radiosity a
+    /// finish's `ambient` still adds `ambient · ambient_light` (in 3.7 scenes it
+    /// counts for nothing; both measured on POV-Ray 3.7).
+    pub legacy_ambient: bool,
 }
 
 impl Default for GlobalSettings {
@@ -113,6 +121,8 @@ impl Default for GlobalSettings {
             noise_generator: 2,
             number_of_waves: 10,
             path_tracing: None,
+            radiosity: None,
+            legacy_ambient: false,
         }
     }
 }

@@ -20,6 +20,11 @@ pub struct ObjectFlags {
     pub hollow: bool,
     /// `double_illuminate`: lit from both sides.
     pub double_illuminate: bool,
+    /// `no_radiosity`: invisible to radiosity's gathering rays.
+    pub no_radiosity: bool,
+    /// `radiosity { importance F }` in ten-thousandths (1 to 10 000); `None`:
+    /// inherited from an enclosing CSG object, else 1.
+    pub importance: Option<u16>,
 }
 
 /// One object: a shape, its placement and its material.

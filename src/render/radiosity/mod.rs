@@ -1,0 +1,307 @@
+//! POV-Ray 3.7's radiosity in the classic renderer: the `ambient` term of every
+//! diffuse surface replaced by light gathered from its surroundings, after
+//! Greg Ward's irradiance caching.
+//!
+//! A pretrace (mosaic passes of camera rays, blocks halving from
+//! `pretrace_start` to `pretrace_end`) fills a [`Cache`] of gathered values;
+//! the final render blends them. A value is gathered by `count` cosine-
+//! distributed rays whose hits are shaded in full (their own diffuse light
+//! coming from the next bounce's values, up to `recursion_limit`).
+//!
+//! Determinism: a pretrace pass traces its pixels in parallel against the cache
+//! as the previous pass left it; the values each pixel gathers (visible to
+//! that pixel's later lookups) are added to the cache in pixel order after the
+//! pass. The final render only reads the cache; where no value is close enough
+//! it gathers one for the point without keeping it. So the picture does not
+//! depend on the number of threads.
+
+mod cache;
+
+pub use cache::{Blend, Cache, Sample};
+
+use super::camera::primary_ray;
+use super::shade::{trace, trace_found, TraceCtx};
+use super::stats::RayStats;
+use super::{media, Crop, Sampler};
+use crate::build::{Ray, RayKind, World};
+use crate::scene::Radiosity;
+use glam::DVec3;
+use rayon::prelude::*;
+
+/// What shading needs to know of radiosity during one phase of a render.
+#[derive(Debug)]
+pub struct State<'a> {
+    /// The scene's settings.
+    pub settings: Radiosity,
+    /// Values gathered so far.
+    pub cache: &'a Cache,
+    /// Where the camera is (reuse radii are fractions of the distance from it).
+    pub eye: DVec3,
+    /// A pretrace pass (gathers where fewer than `nearest_count` values blend,
+    /// under the lowered error bound) rather than the final render.
+    pub pretrace: bool,
+}
+
+/// Per camera sample: which bounce is being gathered and what the pretrace
+/// gathered along the way.
+#[derive(Clone, Debug, Default)]
+pub struct Local {
+    /// 0 on surfaces the camera sees (directly or by reflection and
+    /// refraction); `k` on what the rays gathering bounce `k − 1` meet.
+    pub depth: u32,
+    /// Values this pixel gathered in the current pretrace pass.
+    pub fresh: Vec<Sample>,
+}
+
+impl State<'_> {
+    fn error_bound(&self) -> f64 {
+        if self.pretrace {
+            self.settings.error_bound * self.settings.low_error_factor
+        } else {
+            self.settings.error_bound
+        }
+    }
+
+    /// Whether rays of the current gathering should pass through media.
+    pub fn skips_media(&self, local: &Local) -> bool {
+        local.depth > 0 && !self.settings.media
+    }
+}
+
+/// The diffuse light arriving at `p` (normal `n`, geometric normal `geo_n`,
+/// both unit and facing the viewer), already multiplied by `brightness`: what a
+/// surface's `diffuse · colour` multiplies in place of `ambient`.
+pub fn irradiance(
+    world: &World,
+    rs: &State,
+    p: DVec3,
+    geo_n: DVec3,
+    n: DVec3,
+    level: u32,
+    ctx: &mut TraceCtx,
+) -> DVec3 {
+    let set = &rs.settings;
+    let depth = ctx.rad.depth;
+    if depth >= set.recursion_limit {
+        return DVec3::ZERO;
+    }
+    let eb = rs.error_bound();
+    let mut blend = Blend::default();
+    rs.cache.blend(p, n, depth, eb, &mut blend);
+    for s in ctx.rad.fresh.iter().filter(|s| s.depth == depth) {
+        blend.add(s, p, n, eb);
+    }
+    // The pretrace (and, with `always_sample`, the final render) gathers
+    // where fewer than `nearest_count` values blend; otherwise the final
+    // render gathers only where none does.
+    let enough = if rs.pretrace || set.always_sample {
+        set.nearest_count
+    } else {
+        1
+    };
+    if blend.count < enough {
+        let s = gather(world, rs, p, geo_n, n, level, ctx);
+        blend.add(&s, p, n, eb);
+        if rs.pretrace {
+            ctx.rad.fresh.push(s);
+        }
+    }
+    blend.value() * set.brightness
+}
+
+/// A new value at `p`: `count` rays over the hemisphere about `n`.
+fn gather(
+    world: &World,
+    rs: &State,
+    p: DVec3,
+    geo_n: DVec3,
+    n: DVec3,
+    level: u32,
+    ctx: &mut TraceCtx,
+) -> Sample {
+    let set = &rs.settings;
+    let depth = ctx.rad.depth;
+    let key = hash(p, depth);
+    // The directions: a Sobol (0, 2)-sequence (every prefix well spread, which
+    // `importance` relies on), turned about the normal by an angle of the
+    // point's own so that neighbouring values do not share one pattern.
+    let turn = (key >> 11) as f64 / (1u64 << 53) as f64;
+    let pool = set.count_pool.max(set.count);
+    let offset = if pool > set.count {
+        (key % u64::from(pool)) as u32
+    } else {
+        0
+    };
+    let (t1, t2) = frame(n);
+    // Gathering rays stop where their weight falls below radiosity's own
+    // adc_bailout: shading compares weights with the global one.
+    let weight = if set.adc_bailout > 0.0 {
+        world.global.adc_bailout / set.adc_bailout
+    } else {
+        f64::INFINITY
+    };
+    let count = set.count;
+    let mut sum = DVec3::ZERO;
+    let mut inverse_distance = 0.0;
+    ctx.rad.depth = depth + 1;
+    for k in 0..count {
+        let j = (offset + k) % pool;
+        let u1 = f64::from(sobol_burley::sample(j, 0, 0x5ad1_05e7));
+        let u2 = f64::from(sobol_burley::sample(j, 1, 0x5ad1_05e7));
+        let r = u1.sqrt();
+        let (c, s) = super::sampler::turn((u2 + turn).fract());
+        let dir = (r * c) * t1 + (r * s) * t2 + (1.0 - u1).max(0.0).sqrt() * n;
+        if dir.dot(geo_n) <= 0.0 {
+            // Below the surface itself (a perturbed normal): no light.
+            continue;
+        }
+        let (ray, eps) = Ray::secondary(p, geo_n, dir);
+        ctx.stats.radiosity += 1;
+        let hit = world.intersect(&ray, eps, f64::INFINITY, RayKind::Radiosity);
+        let mut share = 1.0;
+        if let Some(h) = &hit {
+            inverse_distance += 1.0 / h.t.max(1e-9);
+            if let Some(imp) = world.primitives[h.prim as usize].flags.importance {
+                // Only the first count·importance rays of the sequence that
+                // meet this object are traced, each standing for 1/importance.
+                let imp = f64::from(imp) / 10_000.0;
+                if f64::from(k) >= (f64::from(count) * imp).ceil() {
+                    continue;
+                }
+                share = 1.0 / imp;
+            }
+        }
+        sum += share * trace_found(world, &ray, hit, level + 1, weight, ctx);
+    }
+    ctx.rad.depth = depth;
+    let mut e = sum / f64::from(count.max(1));
+    if set.max_sample > 0.0 && e.max_element() > set.max_sample {
+        e *= set.max_sample / e.max_element();
+    }
+    if set.gray_threshold > 0.0 {
+        let grey = DVec3::splat(e.dot(DVec3::new(0.299, 0.587, 0.114)));
+        e = e.lerp(grey, set.gray_threshold);
+    }
+    let harmonic = if inverse_distance > 0.0 {
+        f64::from(count) / inverse_distance
+    } else {
+        f64::INFINITY
+    };
+    let from_eye = (p - rs.eye).length().max(1e-9);
+    Sample {
+        p,
+        n,
+        e,
+        r: harmonic.clamp(set.minimum_reuse * from_eye, set.maximum_reuse * from_eye),
+        depth,
+    }
+}
+
+/// Two unit vectors completing `n` to an orthonormal frame.
+fn frame(n: DVec3) -> (DVec3, DVec3) {
+    let t = if n.x.abs() < 0.9 { DVec3::X } else { DVec3::Y };
+    let t1 = n.cross(t).normalize();
+    (t1, n.cross(t1))
+}
+
+/// A 64-bit hash of a point and bounce (SplitMix64 over the coordinates' bits).
+fn hash(p: DVec3, depth: u32) -> u64 {
+    let mut h = u64::from(depth) ^ 0x2545_f491_4f6c_dd1d;
+    for v in [p.x, p.y, p.z] {
+        h = mix(h ^ v.to_bits());
+    }
+    h
+}
+
+fn mix(mut z: u64) -> u64 {
+    z = z.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// Block sizes of the pretrace passes, in pixels: `pretrace_start` of the
+/// image's larger side, halving down to `pretrace_end`.
+pub fn pretrace_blocks(set: &Radiosity, width: u32, height: u32) -> Vec<f64> {
+    let side = f64::from(width.max(height));
+    let end = (set.pretrace_end * side).max(1.0);
+    let mut size = (set.pretrace_start * side).max(end);
+    let mut out = vec![size];
+    while size / 2.0 >= end * 0.999 && out.len() < 32 {
+        size /= 2.0;
+        out.push(size);
+    }
+    if size > end * 1.001 {
+        out.push(end);
+    }
+    out
+}
+
+/// The radiosity pretrace over `crop` of a `width`×`height` image: the cache
+/// the final render blends. `seed` and `frame` key the samplers as the
+/// render's own. Rays traced go to `stats`.
+pub fn pretrace(
+    world: &World,
+    (width, height): (u32, u32),
+    crop: &Crop,
+    (seed, frame): (u64, u32),
+    stats: &mut RayStats,
+) -> Cache {
+    let Some(set) = world.global.radiosity else {
+        return Cache::default();
+    };
+    let mut cache = Cache::new(set.error_bound);
+    for (pass, block) in pretrace_blocks(&set, width, height).into_iter().enumerate() {
+        let state = State {
+            settings: set,
+            cache: &cache,
+            eye: world.camera.location,
+            pretrace: true,
+        };
+        let mut centres = Vec::new();
+        let mut y = f64::from(crop.y0) + block / 2.0;
+        while y < f64::from(crop.y1) {
+            let mut x = f64::from(crop.x0) + block / 2.0;
+            while x < f64::from(crop.x1) {
+                centres.push((x, y));
+                x += block;
+            }
+            y += block;
+        }
+        let found: Vec<(Vec<Sample>, RayStats)> = centres
+            .par_iter()
+            .map(|&(x, y)| {
+                let mut sampler =
+                    Sampler::new(seed, frame, x as u32, y as u32, 0x7ad0_0000 + pass as u32);
+                let mut rays = RayStats::default();
+                let Some(ray) = primary_ray(&world.camera, x, y, width, height, &mut sampler)
+                else {
+                    return (Vec::new(), rays);
+                };
+                rays.camera += 1;
+                let mut ctx = TraceCtx {
+                    sampler: &mut sampler,
+                    stats: &mut rays,
+                    media: if world.tracks_interiors {
+                        media::MediaPath::at_camera(world)
+                    } else {
+                        media::MediaPath::default()
+                    },
+                    passes: 0,
+                    radiosity: Some(&state),
+                    rad: Local::default(),
+                };
+                trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0, &mut ctx);
+                let fresh = std::mem::take(&mut ctx.rad.fresh);
+                (fresh, rays)
+            })
+            .collect();
+        for (fresh, rays) in found {
+            *stats += rays;
+            for s in fresh {
+                cache.push(s);
+            }
+        }
+    }
+    cache
+}
