@@ -123,3 +123,37 @@ fn lights_inside_unions_move_with_them() {
     // The lights are taken out: the objects no longer hold them.
     assert!(ev.scene.objects.iter().all(|o| o.lights.is_empty()));
 }
+
+/// A light set exactly in a ceiling's plane lights the floor below (POV-Ray's
+/// radiosity/cornell.pov: its lights sit in the ceiling), and a declared light
+/// placed with `light_source { NAME translate … }` is moved like `object { }`.
+#[test]
+fn a_light_in_the_ceiling_plane_and_a_declared_light_placed_again() {
+    let scene = |light: &str| {
+        format!(
+            "#version 3.7;
+global_settings {{ assumed_gamma 1 }}
+camera {{ location <0, 1, -3> look_at <0, 0, 0> }}
+{light}
+plane {{ y, 0 pigment {{ rgb 1 }} finish {{ ambient 0 diffuse 1 }} }}
+plane {{ y, 2 pigment {{ rgb 1 }} finish {{ ambient 0 diffuse 1 }} }}"
+        )
+    };
+    let direct = render_source(
+        "lights",
+        "ceiling_light",
+        &scene("light_source { <0, 2, 0> rgb 1 }"),
+        16,
+        12,
+    );
+    let floor = direct[11 * 16 + 8];
+    assert!(floor[1] > 0.1, "the floor is lit: {floor:?}");
+    let placed = render_source(
+        "lights",
+        "declared_light",
+        &scene("#declare L = light_source { <3, 2, 0> rgb 1 }\nlight_source { L translate <-3, 0, 0> }"),
+        16,
+        12,
+    );
+    assert_eq!(direct, placed);
+}

@@ -49,6 +49,10 @@ impl Evaluator<'_> {
     /// [adaptive A] [circular] [orient]] [fade_distance D fade_power P]
     /// [looks_like { OBJECT }] [shadowless] transforms }`.
     pub(crate) fn light(&mut self, c: &mut Cursor) -> R<Light> {
+        // `light_source { LIGHT_IDENTIFIER transforms }`: as `object { … }`.
+        if matches!(c.peek(), Some(Tok::Val(Value::Light(_), _))) {
+            return self.light_object(c);
+        }
         let location = self.take_vec3(c, "the light's location")?;
         c.comma();
         let colour = if c.value_next() {
@@ -308,8 +312,9 @@ impl Evaluator<'_> {
         Ok(light)
     }
 
-    /// `object { LIGHT_IDENTIFIER transforms }`: a declared light placed again, moved
-    /// by the transforms (POV-Ray lights are objects). `c` starts at the light.
+    /// `object { LIGHT_IDENTIFIER transforms }` (or `light_source { … }`): a
+    /// declared light placed again, moved by the transforms (POV-Ray lights are
+    /// objects). `c` starts at the light.
     pub(crate) fn light_object(&mut self, c: &mut Cursor) -> R<Light> {
         let Some(Tok::Val(Value::Light(l), _)) = c.next() else {
             unreachable!("called when the object block starts with a light");

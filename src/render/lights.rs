@@ -122,6 +122,11 @@ pub fn shadow(
     ctx: &mut TraceCtx,
 ) -> DVec3 {
     let (ray, eps) = Ray::secondary(p, geo_n, dir);
+    // Measured from the ray's own origin (moved off the surface): from a floor
+    // lit by a light set exactly in the ceiling's plane, the distance from `p`
+    // would reach the ceiling (POV-Ray's radiosity/cornell.pov had a black
+    // floor); a surface through the light itself casts no shadow.
+    let dist = (p + dir * dist - ray.origin).length();
     if dist <= eps {
         return DVec3::ONE;
     }

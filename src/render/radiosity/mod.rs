@@ -54,8 +54,10 @@ pub struct Local {
 }
 
 impl State<'_> {
-    fn error_bound(&self) -> f64 {
-        if self.pretrace {
+    /// The error bound for bounce `depth`: lowered by `low_error_factor` for
+    /// the surfaces the camera sees during the pretrace.
+    fn error_bound(&self, depth: u32) -> f64 {
+        if self.pretrace && depth == 0 {
             self.settings.error_bound * self.settings.low_error_factor
         } else {
             self.settings.error_bound
@@ -85,16 +87,20 @@ pub fn irradiance(
     if depth >= set.recursion_limit {
         return DVec3::ZERO;
     }
-    let eb = rs.error_bound();
+    let eb = rs.error_bound(depth);
     let mut blend = Blend::default();
     rs.cache.blend(p, n, depth, eb, &mut blend);
     for s in ctx.rad.fresh.iter().filter(|s| s.depth == depth) {
         blend.add(s, p, n, eb);
     }
-    // The pretrace (and, with `always_sample`, the final render) gathers
-    // where fewer than `nearest_count` values blend; otherwise the final
-    // render gathers only where none does.
-    let enough = if rs.pretrace || set.always_sample {
+    // On the surfaces the camera sees, the pretrace (and, with
+    // `always_sample`, the final render) gathers where fewer than
+    // `nearest_count` values blend; otherwise a value is gathered only where
+    // none can be reused. (Asking `nearest_count` of every bounce multiplies
+    // the cost by itself per bounce: POV-Ray's radiosity/cornell.pov,
+    // `count 200 recursion_limit 3 nearest_count 10`, took minutes instead of
+    // seconds.)
+    let enough = if depth == 0 && (rs.pretrace || set.always_sample) {
         set.nearest_count
     } else {
         1
@@ -252,12 +258,6 @@ pub fn pretrace(
     };
     let mut cache = Cache::new(set.error_bound);
     for (pass, block) in pretrace_blocks(&set, width, height).into_iter().enumerate() {
-        let state = State {
-            settings: set,
-            cache: &cache,
-            eye: world.camera.location,
-            pretrace: true,
-        };
         let mut centres = Vec::new();
         let mut y = f64::from(crop.y0) + block / 2.0;
         while y < f64::from(crop.y1) {
@@ -268,40 +268,96 @@ pub fn pretrace(
             }
             y += block;
         }
-        let found: Vec<(Vec<Sample>, RayStats)> = centres
-            .par_iter()
-            .map(|&(x, y)| {
-                let mut sampler =
-                    Sampler::new(seed, frame, x as u32, y as u32, 0x7ad0_0000 + pass as u32);
-                let mut rays = RayStats::default();
-                let Some(ray) = primary_ray(&world.camera, x, y, width, height, &mut sampler)
-                else {
-                    return (Vec::new(), rays);
-                };
-                rays.camera += 1;
-                let mut ctx = TraceCtx {
-                    sampler: &mut sampler,
-                    stats: &mut rays,
-                    media: if world.tracks_interiors {
-                        media::MediaPath::at_camera(world)
-                    } else {
-                        media::MediaPath::default()
-                    },
-                    passes: 0,
-                    radiosity: Some(&state),
-                    rad: Local::default(),
-                };
-                trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0, &mut ctx);
-                let fresh = std::mem::take(&mut ctx.rad.fresh);
-                (fresh, rays)
-            })
-            .collect();
-        for (fresh, rays) in found {
-            *stats += rays;
-            for s in fresh {
-                cache.push(s);
+        // Waves of 1, 2, 4, … pixels, spread over the image (a bit-reversed
+        // order): each wave reads what the earlier ones gathered, so the
+        // first pixels fill the cache for the rest instead of every pixel of
+        // the first pass gathering the same deeper bounces on its own. Wave
+        // bounds depend on the pixel count only, not on the threads.
+        let order = spread(centres.len());
+        let mut start = 0;
+        let mut wave = 1;
+        while start < order.len() {
+            let end = (start + wave).min(order.len());
+            let state = State {
+                settings: set,
+                cache: &cache,
+                eye: world.camera.location,
+                pretrace: true,
+            };
+            let found = trace_wave(
+                world,
+                &state,
+                &order[start..end],
+                &centres,
+                (width, height),
+                (seed, frame, pass as u32),
+            );
+            for (fresh, rays) in found {
+                *stats += rays;
+                for s in fresh {
+                    cache.push(s);
+                }
             }
+            start = end;
+            wave *= 2;
         }
     }
     cache
+}
+
+/// `0..n` in bit-reversed order of the next power of two (out-of-range ones
+/// skipped): consecutive runs of it are spread evenly over the list.
+fn spread(n: usize) -> Vec<usize> {
+    if n == 0 {
+        return Vec::new();
+    }
+    let bits = usize::BITS - (n - 1).leading_zeros();
+    (0..1usize << bits)
+        .map(|i| {
+            if bits == 0 {
+                0
+            } else {
+                i.reverse_bits() >> (usize::BITS - bits)
+            }
+        })
+        .filter(|&i| i < n)
+        .collect()
+}
+
+/// Traces the pretrace pixels `centres[k]` for `k` in `wave`, in parallel:
+/// what each gathered and the rays it traced, in wave order.
+fn trace_wave(
+    world: &World,
+    state: &State,
+    wave: &[usize],
+    centres: &[(f64, f64)],
+    (width, height): (u32, u32),
+    (seed, frame, pass): (u64, u32, u32),
+) -> Vec<(Vec<Sample>, RayStats)> {
+    wave.par_iter()
+        .map(|&k| {
+            let (x, y) = centres[k];
+            let mut sampler = Sampler::new(seed, frame, x as u32, y as u32, 0x7ad0_0000 + pass);
+            let mut rays = RayStats::default();
+            let Some(ray) = primary_ray(&world.camera, x, y, width, height, &mut sampler) else {
+                return (Vec::new(), rays);
+            };
+            rays.camera += 1;
+            let mut ctx = TraceCtx {
+                sampler: &mut sampler,
+                stats: &mut rays,
+                media: if world.tracks_interiors {
+                    media::MediaPath::at_camera(world)
+                } else {
+                    media::MediaPath::default()
+                },
+                passes: 0,
+                radiosity: Some(state),
+                rad: Local::default(),
+            };
+            trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0, &mut ctx);
+            let fresh = std::mem::take(&mut ctx.rad.fresh);
+            (fresh, rays)
+        })
+        .collect()
 }
