@@ -146,3 +146,22 @@ box {{ <-1, 0, -1>, <1, 2.5, 1> pigment {{ rgb <0.8, 0.2, 0.2> }} translate <1.6
         "{black} black pixels without radiosity, {black_lit} with"
     );
 }
+
+#[test]
+fn rad_def_presets_expand_inside_the_radiosity_block() {
+    let scene = |preset: &str| {
+        format!(
+            "#version 3.7;
+#include \"rad_def.inc\"
+global_settings {{ assumed_gamma 1 radiosity {{ Rad_Settings({preset}, off, off) }} }}
+camera {{ location <0, 3, -5> look_at <0, 0, 0> }}
+background {{ rgb 1 }}
+plane {{ y, 0 pigment {{ rgb 0.5 }} finish {{ diffuse 0.7 }} }}"
+        )
+    };
+    for preset in ["Radiosity_Default", "Radiosity_Debug", "Radiosity_IndoorHQ"] {
+        let px = render_source("radiosity", preset, &scene(preset), 24, 18);
+        let v = px[15 * 24 + 12][1];
+        assert!((v - 0.35).abs() < 0.003, "{preset}: {v}");
+    }
+}

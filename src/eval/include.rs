@@ -20,6 +20,7 @@ pub const STDLIB: &[(&str, &str)] = &[
     ("golds.inc", include_str!("../stdlib/golds.inc")),
     ("math.inc", include_str!("../stdlib/math.inc")),
     ("metals.inc", include_str!("../stdlib/metals.inc")),
+    ("rad_def.inc", include_str!("../stdlib/rad_def.inc")),
     ("rand.inc", include_str!("../stdlib/rand.inc")),
     ("shapes.inc", include_str!("../stdlib/shapes.inc")),
     ("shapes2.inc", include_str!("../stdlib/shapes2.inc")),
