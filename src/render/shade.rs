@@ -296,15 +296,12 @@ fn shade_texture(
                             } else {
                                 facing(s.normal)
                             };
-                            let e = super::radiosity::irradiance(
-                                world,
-                                rs,
+                            let at = super::radiosity::Spot {
                                 p,
-                                facing(geo_n),
-                                rn,
-                                level,
-                                ctx,
-                            );
+                                geo_n: facing(geo_n),
+                                n: rn,
+                            };
+                            let e = super::radiosity::irradiance(world, rs, at, level, ctx);
                             gathered = Some(e);
                             e
                         }

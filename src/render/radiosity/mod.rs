@@ -70,18 +70,23 @@ impl State<'_> {
     }
 }
 
-/// The diffuse light arriving at `p` (normal `n`, geometric normal `geo_n`,
-/// both unit and facing the viewer), already multiplied by `brightness`: what a
-/// surface's `diffuse · colour` multiplies in place of `ambient`.
-pub fn irradiance(
-    world: &World,
-    rs: &State,
-    p: DVec3,
-    geo_n: DVec3,
-    n: DVec3,
-    level: u32,
-    ctx: &mut TraceCtx,
-) -> DVec3 {
+/// A point light is gathered at: position, geometric normal and the normal
+/// gathered about (both unit and facing the viewer).
+#[derive(Clone, Copy, Debug)]
+pub struct Spot {
+    /// The point.
+    pub p: DVec3,
+    /// The surface's own normal (rays must leave on its side).
+    pub geo_n: DVec3,
+    /// The normal gathering is about (perturbed when `normal on`).
+    pub n: DVec3,
+}
+
+/// The diffuse light arriving at `at`, already multiplied by `brightness`:
+/// what a surface's `diffuse · colour` multiplies in place of `ambient`.
+/// `level` is the trace level of the ray that found the point.
+pub fn irradiance(world: &World, rs: &State, at: Spot, level: u32, ctx: &mut TraceCtx) -> DVec3 {
+    let Spot { p, n, .. } = at;
     let set = &rs.settings;
     let depth = ctx.rad.depth;
     if depth >= set.recursion_limit {
@@ -106,7 +111,7 @@ pub fn irradiance(
         1
     };
     if blend.count < enough {
-        let s = gather(world, rs, p, geo_n, n, level, ctx);
+        let s = gather(world, rs, at, level, ctx);
         blend.add(&s, p, n, eb);
         if rs.pretrace {
             ctx.rad.fresh.push(s);
@@ -115,16 +120,9 @@ pub fn irradiance(
     blend.value() * set.brightness
 }
 
-/// A new value at `p`: `count` rays over the hemisphere about `n`.
-fn gather(
-    world: &World,
-    rs: &State,
-    p: DVec3,
-    geo_n: DVec3,
-    n: DVec3,
-    level: u32,
-    ctx: &mut TraceCtx,
-) -> Sample {
+/// A new value at `at`: `count` rays over the hemisphere about its normal.
+fn gather(world: &World, rs: &State, at: Spot, level: u32, ctx: &mut TraceCtx) -> Sample {
+    let Spot { p, geo_n, n } = at;
     let set = &rs.settings;
     let depth = ctx.rad.depth;
     let key = hash(p, depth);
