@@ -22,12 +22,17 @@ pub fn progress_bar(progress: &Progress, done: &AtomicBool) {
         indicatif::ProgressDrawTarget::stderr_with_hz(10),
     );
     if let Ok(style) = indicatif::ProgressStyle::with_template(
-        "{spinner} rendering [{elapsed_precise}] {wide_bar} {percent:>3}% ETA {eta}",
+        "{spinner} {msg} [{elapsed_precise}] {wide_bar} {percent:>3}% ETA {eta}",
     ) {
         bar.set_style(style);
     }
     while !done.load(Ordering::Relaxed) {
         let total = progress.total.load(Ordering::Relaxed);
+        bar.set_message(if progress.pretrace.load(Ordering::Relaxed) {
+            "radiosity pretrace"
+        } else {
+            "rendering"
+        });
         if total > 0 {
             bar.set_length(total);
             bar.set_position(progress.done.load(Ordering::Relaxed));

@@ -96,6 +96,8 @@ pub struct Progress {
     pub done: AtomicU64,
     /// Units in the whole render, set when it starts.
     pub total: AtomicU64,
+    /// Radiosity's pretrace is running (`done`/`total` then count its pixels).
+    pub pretrace: std::sync::atomic::AtomicBool,
 }
 
 /// Counts from one render; the same for any number of threads.
@@ -176,6 +178,7 @@ pub fn render_with(
             &crop,
             (settings.seed, settings.frame),
             &mut pretrace_rays,
+            progress,
         )),
         _ => None,
     };
@@ -211,6 +214,7 @@ pub fn render_with(
         };
         p.total.store(units, Ordering::Relaxed);
         p.done.store(0, Ordering::Relaxed);
+        p.pretrace.store(false, Ordering::Relaxed);
     }
     let tick = || {
         if let Some(p) = progress {

@@ -22,11 +22,12 @@ pub use cache::{Blend, Cache, Sample};
 use super::camera::primary_ray;
 use super::shade::{trace, trace_found, TraceCtx};
 use super::stats::RayStats;
-use super::{media, Crop, Sampler};
+use super::{media, Crop, Progress, Sampler};
 use crate::build::{Ray, RayKind, World};
 use crate::scene::Radiosity;
 use glam::DVec3;
 use rayon::prelude::*;
+use std::sync::atomic::Ordering;
 
 /// What shading needs to know of radiosity during one phase of a render.
 #[derive(Debug)]
@@ -243,29 +244,31 @@ pub fn pretrace_blocks(set: &Radiosity, width: u32, height: u32) -> Vec<f64> {
 
 /// The radiosity pretrace over `crop` of a `width`×`height` image: the cache
 /// the final render blends. `seed` and `frame` key the samplers as the
-/// render's own. Rays traced go to `stats`.
+/// render's own. Rays traced go to `stats`; pixels done to `progress` (with
+/// its `pretrace` flag set meanwhile).
 pub fn pretrace(
     world: &World,
     (width, height): (u32, u32),
     crop: &Crop,
     (seed, frame): (u64, u32),
     stats: &mut RayStats,
+    progress: Option<&Progress>,
 ) -> Cache {
     let Some(set) = world.global.radiosity else {
         return Cache::default();
     };
     let mut cache = Cache::new(set.error_bound);
-    for (pass, block) in pretrace_blocks(&set, width, height).into_iter().enumerate() {
-        let mut centres = Vec::new();
-        let mut y = f64::from(crop.y0) + block / 2.0;
-        while y < f64::from(crop.y1) {
-            let mut x = f64::from(crop.x0) + block / 2.0;
-            while x < f64::from(crop.x1) {
-                centres.push((x, y));
-                x += block;
-            }
-            y += block;
-        }
+    let passes: Vec<Vec<(f64, f64)>> = pretrace_blocks(&set, width, height)
+        .into_iter()
+        .map(|block| block_centres(crop, block))
+        .collect();
+    if let Some(p) = progress {
+        let total: usize = passes.iter().map(Vec::len).sum();
+        p.total.store(total as u64, Ordering::Relaxed);
+        p.done.store(0, Ordering::Relaxed);
+        p.pretrace.store(true, Ordering::Relaxed);
+    }
+    for (pass, centres) in passes.iter().enumerate() {
         // Waves of 1, 2, 4, … pixels, spread over the image (a bit-reversed
         // order): each wave reads what the earlier ones gathered, so the
         // first pixels fill the cache for the rest instead of every pixel of
@@ -286,10 +289,13 @@ pub fn pretrace(
                 world,
                 &state,
                 &order[start..end],
-                &centres,
+                centres,
                 (width, height),
                 (seed, frame, pass as u32),
             );
+            if let Some(p) = progress {
+                p.done.fetch_add((end - start) as u64, Ordering::Relaxed);
+            }
             for (fresh, rays) in found {
                 *stats += rays;
                 for s in fresh {
@@ -301,6 +307,21 @@ pub fn pretrace(
         }
     }
     cache
+}
+
+/// The centres of the blocks of side `block` pixels that tile `crop`.
+fn block_centres(crop: &Crop, block: f64) -> Vec<(f64, f64)> {
+    let mut centres = Vec::new();
+    let mut y = f64::from(crop.y0) + block / 2.0;
+    while y < f64::from(crop.y1) {
+        let mut x = f64::from(crop.x0) + block / 2.0;
+        while x < f64::from(crop.x1) {
+            centres.push((x, y));
+            x += block;
+        }
+        y += block;
+    }
+    centres
 }
 
 /// `0..n` in bit-reversed order of the next power of two (out-of-range ones
