@@ -534,3 +534,26 @@ fn cells_hold_one_value_per_unit_cube() {
         "{cell:?}"
     );
 }
+
+/// POV-Ray's object pattern: the second entry inside the object, the first
+/// outside, for pigments, textures and with a transformed object.
+#[test]
+fn object_pattern_picks_the_inside_entry() {
+    let scene = "#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { orthographic location <0, 0, -5> look_at 0 right x*4 up y*3 }
+#declare S = sphere { 0, 1 }
+plane { z, 0
+  pigment { object { S color rgb <1, 0, 0>, color rgb <0, 0, 1> } }
+  finish { ambient 1 diffuse 0 } }
+box { <1, -1.5, -0.1>, <2, 1.5, 0>
+  texture { object { box { <-1, -1, -1>, <1, 0, 1> } translate x*1.5
+    texture { pigment { rgb 1 } finish { ambient 1 diffuse 0 } },
+    texture { pigment { rgb <0, 1, 0> } finish { ambient 1 diffuse 0 } } } } }";
+    let px = render_support::render_source("object_pattern", "object", scene, 40, 30);
+    let at = |x: usize, y: usize| px[y * 40 + x];
+    assert_eq!(at(20, 15), [0.0, 0.0, 1.0], "inside the sphere");
+    assert_eq!(at(3, 3), [1.0, 0.0, 0.0], "outside the sphere");
+    assert_eq!(at(35, 20), [0.0, 1.0, 0.0], "inside the box (lower half)");
+    assert_eq!(at(35, 5), [1.0, 1.0, 1.0], "outside the box (upper half)");
+}

@@ -112,19 +112,32 @@ impl Evaluator<'_> {
             return self.camera_path(b).map(Some);
         }
         let mut toks = Sink::new();
+        // `object { … }` among a pigment's, normal's or texture's items is the
+        // object pattern: its object is read as usual, its pigments (or
+        // normals, textures) are entries, not the object's own.
+        let object_pattern = kw == "object" && self.pattern_items;
+        let outer_pattern = std::mem::replace(
+            &mut self.pattern_items,
+            matches!(kw, "pigment" | "normal" | "texture" | "density"),
+        );
         let lists = matches!(kw, "poly" | "cubic" | "quartic");
         let outer = std::mem::replace(&mut self.coefficient_lists, lists);
         // Texture bodies (also a texture_map's entries) and objects read a
         // pigment, finish or normal as a change to the one in force.
-        let defer = matches!(kw, "texture" | "texture_map" | "interior_texture")
-            || OBJECT_BLOCKS.contains(&kw);
+        let defer = (matches!(kw, "texture" | "texture_map" | "interior_texture")
+            || OBJECT_BLOCKS.contains(&kw))
+            && !object_pattern;
         let outer_defer = std::mem::replace(&mut self.defer_material_blocks, defer);
         let in_blob = std::mem::replace(&mut self.blob_items, kw == "blob");
         self.expand(&b.items, &mut toks);
         self.blob_items = in_blob;
         self.defer_material_blocks = outer_defer;
         self.coefficient_lists = outer;
+        self.pattern_items = outer_pattern;
         let mut c = Cursor::new(toks.toks, kw, b.span);
+        if object_pattern {
+            return self.object_pattern(&mut c).map(Some);
+        }
         if kw == "object" && matches!(c.peek(), Some(Tok::Val(Value::Light(_), _))) {
             return Ok(Some(Value::Light(std::sync::Arc::new(
                 self.light_object(&mut c)?,

@@ -116,6 +116,15 @@ pub(crate) struct Cursor {
 }
 
 impl Cursor {
+    /// Puts `toks` in front of the items still to come (an object pattern's
+    /// entries, read where the pattern keyword stood).
+    pub(crate) fn inject(&mut self, toks: Vec<Tok>) {
+        let mut all = toks;
+        all.extend(self.peeked.take());
+        all.extend(std::mem::take(&mut self.toks));
+        self.toks = all.into_iter();
+    }
+
     pub(crate) fn new(toks: Vec<Tok>, block: &'static str, span: Span) -> Cursor {
         Cursor {
             toks: toks.into_iter(),

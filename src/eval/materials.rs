@@ -266,7 +266,7 @@ impl Evaluator<'_> {
         let mut uv_mapping: Option<Span> = None;
         while let Some(tok) = c.next() {
             let tok = self.function_pattern_token(tok);
-            let tok = self.block_pattern_token(tok);
+            let tok = self.block_pattern_token(tok, c);
             // `pigment { … }`, `finish { … }`, `normal { … }` modify the texture's own.
             let tok = match tok {
                 Tok::Deferred(b) => {
@@ -752,7 +752,7 @@ impl Evaluator<'_> {
         let mut uv_mapping = false;
         while let Some(tok) = c.next() {
             let tok = self.function_pattern_token(tok);
-            let tok = self.block_pattern_token(tok);
+            let tok = self.block_pattern_token(tok, c);
             let r: R<()> = match tok {
                 Tok::Val(Value::Pigment(p), _) if !pattern_given => {
                     pig = (*p).clone();
@@ -940,7 +940,7 @@ impl Evaluator<'_> {
         }
         while let Some(tok) = c.next() {
             let tok = self.function_pattern_token(tok);
-            let tok = self.block_pattern_token(tok);
+            let tok = self.block_pattern_token(tok, c);
             let r: R<()> = match tok {
                 Tok::Kw(kw, _) if PATTERNS.contains(&kw) => {
                     let r = self.pattern_kw(kw, c, &mut spec, false);

@@ -225,6 +225,7 @@ pub fn eval_cached(
         files_seen: Default::default(),
         deprecated: Default::default(),
         pending_pattern: None,
+        pattern_items: false,
     };
     ev.define_command_line();
     ev.run_top(&file.items);
@@ -317,6 +318,9 @@ pub(crate) struct Evaluator<'a> {
     /// The pattern of a pattern block (`pigment_pattern { … }`) just met among a
     /// pigment's, normal's or texture's items (see `block_pattern_token`).
     pub(crate) pending_pattern: Option<crate::scene::PatternKind>,
+    /// Set while the items of a `pigment`, `normal`, `texture` or `density`
+    /// are read: there an `object { OBJECT A, B }` block is the object pattern.
+    pub(crate) pattern_items: bool,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps
@@ -436,9 +440,18 @@ impl Evaluator<'_> {
                 && !self.scene.objects.is_empty()
                 && self.scene.global.path_tracing.is_none()
             {
+                let help = if self.scene.global.radiosity.is_some() {
+                    "add `light_source { <10, 10, -10> color rgb 1 }`; radiosity will gather only the background, sky and `emission`"
+                } else {
+                    "add `light_source { <10, 10, -10> color rgb 1 }`; only ambient light will show"
+                };
                 self.diags.push(
-                    Diagnostic::warning(codes::NO_LIGHTS, Span::new(self.include_stack[0], 0, 0), "the scene has no light sources")
-                        .with_help("add `light_source { <10, 10, -10> color rgb 1 }`; only ambient light will show"),
+                    Diagnostic::warning(
+                        codes::NO_LIGHTS,
+                        Span::new(self.include_stack[0], 0, 0),
+                        "the scene has no light sources",
+                    )
+                    .with_help(help),
                 );
             }
         }

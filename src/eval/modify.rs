@@ -60,9 +60,12 @@ impl Evaluator<'_> {
         let mut sink = Sink::new();
         // What is inside the block is not itself in a texture or object.
         let outer = std::mem::replace(&mut self.defer_material_blocks, false);
+        let outer_pattern =
+            std::mem::replace(&mut self.pattern_items, matches!(kw, "pigment" | "normal"));
         let trace = std::mem::replace(&mut self.trace, d.trace.clone());
         self.scope.reopen(&d.locals);
         self.expand(&b.items, &mut sink);
+        self.pattern_items = outer_pattern;
         for _ in &d.locals {
             self.scope.pop();
         }

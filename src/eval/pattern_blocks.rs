@@ -8,8 +8,8 @@ use super::value::Value;
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
 use crate::scene::{
-    Colour, ImageMap, ImagePattern, ImageUse, Normal, NormalBlend, PatternKind, PatternMods,
-    PatternedTexture, SlopeSpec, Texture, TextureEntries,
+    Colour, ImageMap, ImagePattern, ImageUse, InsideTest, Normal, NormalBlend, PatternKind,
+    PatternMods, PatternedTexture, SlopeSpec, Texture, TextureEntries,
 };
 use crate::span::Span;
 use glam::{DVec2, DVec3};
@@ -45,8 +45,13 @@ impl Evaluator<'_> {
     /// A pattern block among a pigment's, normal's or texture's items becomes
     /// its keyword; its pattern waits in `pending_pattern` for `pattern_kw`
     /// (as `function { }` does).
-    pub(crate) fn block_pattern_token(&mut self, tok: Tok) -> Tok {
+    pub(crate) fn block_pattern_token(&mut self, tok: Tok, c: &mut Cursor) -> Tok {
         match tok {
+            Tok::Block("object", Value::ObjectPattern(op), span) => {
+                self.pending_pattern = Some(op.0.clone());
+                c.inject(op.1 .0.clone());
+                Tok::Kw("object", span)
+            }
             Tok::Block(
                 kw @ ("pigment_pattern" | "image_pattern" | "slope"),
                 Value::Pattern(p),
@@ -493,4 +498,45 @@ fn palette_indices(path: &std::path::Path) -> Option<Vec<u8>> {
         }
     }
     Some(idx)
+}
+
+impl Evaluator<'_> {
+    /// `object { OBJECT_IDENTIFIER | OBJECT { } [transforms] A, B }` as a
+    /// pattern: entry A outside the object, B inside (POV-Ray's object
+    /// pattern). The entries stay tokens until the pattern's reader takes them.
+    pub(crate) fn object_pattern(&mut self, c: &mut Cursor) -> R<Value> {
+        let mut object = match c.next() {
+            Some(Tok::Val(Value::Object(o), _) | Tok::Block(_, Value::Object(o), _)) => o,
+            Some(Tok::Val(Value::Poison, _) | Tok::Block(_, Value::Poison, _)) => {
+                return Err(Fail::silent())
+            }
+            other => {
+                let at = other.as_ref().map_or(c.span, Tok::span);
+                return Err(Diagnostic::error(
+                    codes::MISSING_VALUE,
+                    at,
+                    "the object pattern starts with the object to test",
+                )
+                .with_help("write `object { MyObject color White, color Red }` (outside, inside)")
+                .into());
+            }
+        };
+        let mut entries = Vec::new();
+        while let Some(tok) = c.next() {
+            match tok {
+                Tok::Kw(kw, span) if super::objects::TRANSFORMS.contains(&kw) => {
+                    let t = self.transform_kw(kw, span, c)?;
+                    let o = Arc::make_mut(&mut object);
+                    super::objects::apply_transform(o, &t);
+                }
+                t => entries.push(t),
+            }
+        }
+        let world = self.built(&object);
+        let test = InsideTest(Arc::new(move |p| world.inside(p)));
+        Ok(Value::ObjectPattern(std::rc::Rc::new((
+            PatternKind::Object(test),
+            super::value::ObjectPatternEntries(entries),
+        ))))
+    }
 }

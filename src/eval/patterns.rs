@@ -12,6 +12,7 @@ use std::sync::Arc;
 /// Pattern keywords this release evaluates.
 pub(crate) const PATTERNS: &[&str] = &[
     "checker",
+    "object",
     "hexagon",
     "brick",
     "gradient",
@@ -213,7 +214,9 @@ impl Evaluator<'_> {
             "function" => self.take_function_pattern(c)?,
             "planar" | "spherical" | "cylindrical" | "boxed" | "quilted" | "spiral1"
             | "spiral2" | "mandel" | "julia" | "magnet" => self.shape_pattern(kw, c)?,
-            "pigment_pattern" | "image_pattern" | "slope" => self.take_block_pattern(kw, c)?,
+            "pigment_pattern" | "image_pattern" | "slope" | "object" => {
+                self.take_block_pattern(kw, c)?
+            }
             "average" => PatternKind::Average,
             "density_file" => self.density_file(c)?,
             "cells" => PatternKind::Cells,

@@ -35,7 +35,7 @@ pub(crate) struct BuiltObjects {
 
 impl Evaluator<'_> {
     /// The hierarchy of `object`, built once per distinct object value.
-    fn built(&mut self, object: &Arc<Object>) -> Arc<World> {
+    pub(crate) fn built(&mut self, object: &Arc<Object>) -> Arc<World> {
         let kept = &mut self.built_objects.kept;
         if let Some(i) = kept.iter().position(|(o, _)| Arc::ptr_eq(o, object)) {
             let entry = kept.remove(i);

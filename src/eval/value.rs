@@ -151,6 +151,9 @@ pub enum Value {
     Camera(Arc<CameraSpec>),
     /// A `mesh_camera { … }` block, inside a camera.
     MeshCamera(Arc<crate::scene::MeshCamera>),
+    /// `object { OBJECT A, B }` read as a pattern: its kind and the entries
+    /// after the object (see `pattern_blocks.rs`).
+    ObjectPattern(std::rc::Rc<(crate::scene::PatternKind, ObjectPatternEntries)>),
     /// A `radiosity { … }` block: global settings or an object's importance.
     Radiosity(Arc<crate::scene::RadiosityBlock>),
     /// A light source.
@@ -224,6 +227,7 @@ impl Value {
             Value::Camera(_) => "a camera",
             Value::MeshCamera(_) => "a mesh_camera block",
             Value::Radiosity(_) => "a radiosity block",
+            Value::ObjectPattern(_) => "an object pattern",
             Value::Light(_) => "a light source",
             Value::SkySphere(_) => "a sky_sphere",
             Value::Fog(_) => "a fog",
@@ -264,3 +268,7 @@ pub fn colour_from_array(a: [f64; 5]) -> Colour {
         transmit: a[4],
     }
 }
+
+/// The items after an object pattern's object (its entries), kept as read.
+#[derive(Clone, Debug)]
+pub struct ObjectPatternEntries(pub(crate) Vec<super::cursor::Tok>);

@@ -307,6 +307,8 @@ pub enum PatternKind {
     /// `density_file df3 "FILE" [interpolate N]`: a value read from a 3-D grid
     /// filling the unit cube (see [`super::DensityGrid`]).
     DensityFile(Arc<super::DensityGrid>),
+    /// `object { OBJECT A, B }`: entry B inside the object, A outside.
+    Object(InsideTest),
     /// `average`: the entries of a pigment, normal or texture map averaged by
     /// their weights (the map values).
     Average,
@@ -368,6 +370,7 @@ impl PatternKind {
                 | PatternKind::Hexagon
                 | PatternKind::Brick { .. }
                 | PatternKind::MaterialMap(_)
+                | PatternKind::Object(_)
         )
     }
 }
@@ -623,5 +626,29 @@ impl Default for Interior {
             fade_colour: DVec3::ZERO,
             media: Vec::new(),
         }
+    }
+}
+
+/// The inside test of an `object` pattern's object, made by the evaluator from
+/// the built object (so the scene description does not depend on the build).
+#[derive(Clone)]
+pub struct InsideTest(pub Arc<dyn Fn(DVec3) -> bool + Send + Sync>);
+
+impl InsideTest {
+    /// Whether `p` (pattern space) is inside the object.
+    pub fn inside(&self, p: DVec3) -> bool {
+        (self.0)(p)
+    }
+}
+
+impl PartialEq for InsideTest {
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+    }
+}
+
+impl std::fmt::Debug for InsideTest {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("InsideTest")
     }
 }

@@ -26,9 +26,9 @@ pub use camera::{Camera, CameraFace, CameraKind, CameraMesh, MeshCamera, UvGrid}
 pub use density::{DensityGrid, DF3_MAX_VOXELS};
 pub use light::{AreaLight, Beam, Light, LightKind};
 pub use material::{
-    compose, Colour, Finish, ImageMap, Interior, Irid, Mapped, Normal, Pattern, PatternKind,
-    PatternMap, PatternMods, PatternedTexture, Pigment, Reflection, Texture, TextureEntries,
-    TextureMapEntries, Wave,
+    compose, Colour, Finish, ImageMap, InsideTest, Interior, Irid, Mapped, Normal, Pattern,
+    PatternKind, PatternMap, PatternMods, PatternedTexture, Pigment, Reflection, Texture,
+    TextureEntries, TextureMapEntries, Wave,
 };
 pub use material::{ImagePattern, ImageUse, NormalBlend, SlopeSpec};
 pub use media::{Media, Scattering, ScatteringKind};

@@ -18,6 +18,7 @@ pub fn list_index(kind: &PatternKind, p: DVec3) -> usize {
         PatternKind::Hexagon => hexagon_index(p),
         PatternKind::Brick { size, mortar } => usize::from(!is_mortar(p, *size, *mortar)),
         PatternKind::MaterialMap(im) => super::image_map::index_at(im, p),
+        PatternKind::Object(t) => usize::from(t.inside(p)),
         _ => 0,
     }
 }
@@ -143,7 +144,7 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
         PatternKind::ImagePattern(im) => super::image_map::value_at(im, p),
         PatternKind::DensityFile(g) => g.value(p),
         PatternKind::Slope(s) => super::slope::value(s, p),
-        PatternKind::Average | PatternKind::MaterialMap(_) => 0.0,
+        PatternKind::Average | PatternKind::MaterialMap(_) | PatternKind::Object(_) => 0.0,
     }
 }
 
