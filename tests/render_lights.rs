@@ -157,3 +157,54 @@ plane {{ y, 2 pigment {{ rgb 1 }} finish {{ ambient 0 diffuse 1 }} }}"
     );
     assert_eq!(direct, placed);
 }
+
+/// `light_group`: a group's lights light only its objects (and those of groups
+/// nested in it); the scene's lights light a group's objects only with
+/// `global_lights on` (the picture is identical to POV-Ray 3.7's).
+#[test]
+fn light_groups_light_only_their_own_objects() {
+    let scene = "#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 1, -6> look_at <0, 0.5, 0> }
+light_source { <0, 10, -10> rgb 0.8 }
+#declare RedLight = light_source { <-5, 5, -5> rgb <1, 0, 0> }
+light_group {
+  light_source { RedLight }
+  sphere { <-1.5, 0.5, 0>, 0.8 pigment { rgb 1 } finish { ambient 0 } }
+  global_lights off
+}
+light_group {
+  light_source { <5, 5, -5> rgb <0, 0, 1> }
+  sphere { <1.5, 0.5, 0>, 0.8 pigment { rgb 1 } finish { ambient 0 } }
+  global_lights on
+}
+#declare L1 = light_group {
+  light_source { <0, 5, -5> rgb <0, 1, 0> }
+  sphere { <0, 1.8, 0>, 0.5 pigment { rgb 1 } finish { ambient 0 } }
+}
+light_group { light_source { <0, 1.8, -5> rgb 0.5 } light_group { L1 } }
+plane { y, -0.3 pigment { rgb 1 } finish { ambient 0 } }";
+    let px = render_source("lights", "light_group", scene, 40, 30);
+    let at = |x: usize, y: usize| px[y * 40 + x];
+    // Left: the red group light only.
+    let left = at(11, 17);
+    assert!(
+        left[0] > 0.01 && left[1] == 0.0 && left[2] == 0.0,
+        "{left:?}"
+    );
+    // Right: its blue light and the scene's white one.
+    let right = at(28, 17);
+    assert!(right[2] > right[0] && right[0] > 0.01, "{right:?}");
+    // Top: the nested group's green light and the outer group's white one.
+    let top = at(20, 9);
+    assert!(
+        top[1] > top[0] && top[0] > 0.01 && (top[0] - top[2]).abs() < 1e-6,
+        "{top:?}"
+    );
+    // The floor: the scene's light only.
+    let floor = at(20, 26);
+    assert!(
+        floor[0] > 0.1 && floor[0] == floor[1] && floor[1] == floor[2],
+        "{floor:?}"
+    );
+}

@@ -208,6 +208,10 @@ fn or_flags(a: ObjectFlags, b: ObjectFlags) -> ObjectFlags {
         no_radiosity: a.no_radiosity || b.no_radiosity,
         // A CSG child's own importance wins over its parent's.
         importance: b.importance.or(a.importance),
+        // Nested groups inherit the outer groups' lights; the innermost group
+        // says whether the scene's lights count too.
+        light_groups: a.light_groups | b.light_groups,
+        global_lights: b.global_lights.or(a.global_lights),
     }
 }
 

@@ -66,7 +66,7 @@ pub(crate) const BLOCKS: &[&str] = &[
 ];
 
 /// POV-Ray blocks that a later release implements.
-const LATER_BLOCKS: &[&str] = &["photons", "light_group"];
+const LATER_BLOCKS: &[&str] = &["photons"];
 
 /// Whether `k` opens a block this release evaluates.
 pub(crate) fn is_evaluated_block(k: &str) -> bool {

@@ -500,7 +500,9 @@ impl Evaluator<'_> {
                         Ok(())
                     }
                 },
-                Tok::Block(kw @ "photons", _, span) | Tok::Kw(kw @ "photons", span) => Err(Diagnostic::error(
+                // The block itself was reported where it was read.
+                Tok::Block("photons", _, _) => Ok(()),
+                Tok::Kw(kw @ "photons", span) => Err(Diagnostic::error(
                     codes::UNSUPPORTED,
                     span,
                     format!("`{kw}` is not implemented in rts yet"),

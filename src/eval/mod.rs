@@ -226,6 +226,7 @@ pub fn eval_cached(
         deprecated: Default::default(),
         pending_pattern: None,
         pattern_items: false,
+        light_groups: 0,
     };
     ev.define_command_line();
     ev.run_top(&file.items);
@@ -321,6 +322,8 @@ pub(crate) struct Evaluator<'a> {
     /// Set while the items of a `pigment`, `normal`, `texture` or `density`
     /// are read: there an `object { OBJECT A, B }` block is the object pattern.
     pub(crate) pattern_items: bool,
+    /// `light_group`s made so far (each takes one bit of the objects' masks).
+    pub(crate) light_groups: u32,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps

@@ -43,6 +43,7 @@ pub(crate) const TRANSFORMS: &[&str] = &["translate", "rotate", "scale", "matrix
 /// The keywords of object blocks (their items may modify the object's texture).
 pub(crate) const OBJECT_BLOCKS: &[&str] = &[
     "sphere",
+    "light_group",
     "plane",
     "box",
     "triangle",
@@ -172,6 +173,7 @@ impl Evaluator<'_> {
                     span,
                 )
             }
+            "light_group" => return self.light_group(c),
             "union" | "merge" | "intersection" | "difference" => {
                 let mut children = Vec::new();
                 let mut lights = Vec::new();
@@ -336,6 +338,15 @@ impl Evaluator<'_> {
             }
             t => t,
         };
+        if matches!(tok, Tok::Kw("global_lights", _)) && c.block == "light_group" {
+            // After a light_group's transforms too, as POV-Ray allows.
+            obj.flags.global_lights = Some(if c.value_next() {
+                self.take_float(c, "on or off")? != 0.0
+            } else {
+                true
+            });
+            return Ok(());
+        }
         if let (Tok::Kw(kw, _), Shape::Isosurface(iso)) = (&tok, &mut obj.shape) {
             if super::function::isosurface::ISOSURFACE_ITEMS.contains(kw) {
                 return self.isosurface_late(iso, tok, c);
@@ -698,4 +709,64 @@ pub(crate) fn matrix_from_12(m: &[f64]) -> Option<Transform> {
         col(2, 0.0),
         col(3, 1.0),
     ))
+}
+
+/// Most `light_group`s a scene may have (one bit each in an object's mask).
+pub(crate) const MAX_LIGHT_GROUPS: u32 = 64;
+
+impl Evaluator<'_> {
+    /// `light_group { LIGHTS OBJECTS [global_lights BOOL] [modifiers] }`: a
+    /// union whose lights light only its own objects (and those of groups
+    /// nested in it); with `global_lights on` the scene's lights light them
+    /// too (POV-Ray's default is off).
+    fn light_group(&mut self, c: &mut Cursor) -> R<Object> {
+        let span = c.span;
+        if self.light_groups >= MAX_LIGHT_GROUPS {
+            return Err(Diagnostic::error(
+                codes::OUT_OF_RANGE,
+                span,
+                format!("a scene may have at most {MAX_LIGHT_GROUPS} light groups"),
+            )
+            .with_help("merge groups that share their lights")
+            .into());
+        }
+        let group = self.light_groups;
+        self.light_groups += 1;
+        let mut children = Vec::new();
+        let mut lights = Vec::new();
+        let mut global = false;
+        loop {
+            match c.peek() {
+                Some(
+                    Tok::Block(_, Value::Object(_) | Value::Light(_) | Value::Poison, _)
+                    | Tok::Val(Value::Object(_) | Value::Light(_), _),
+                ) => match c.next() {
+                    Some(Tok::Block(_, Value::Object(o), _) | Tok::Val(Value::Object(o), _)) => {
+                        children.push(Arc::try_unwrap(o).unwrap_or_else(|a| (*a).clone()))
+                    }
+                    Some(Tok::Block(_, Value::Light(l), _) | Tok::Val(Value::Light(l), _)) => {
+                        let mut l = (*l).clone();
+                        l.group = Some(group as u8);
+                        lights.push(l);
+                    }
+                    _ => {}
+                },
+                Some(Tok::Kw("global_lights", _)) => {
+                    c.next();
+                    global = if c.value_next() {
+                        self.take_float(c, "on or off")? != 0.0
+                    } else {
+                        true
+                    };
+                }
+                _ => break,
+            }
+        }
+        let mut obj = Object::new(Shape::Union { children }, span);
+        obj.lights = lights;
+        obj.flags.light_groups = 1u64 << group;
+        obj.flags.global_lights = Some(global);
+        self.modifiers(&mut obj, c, true);
+        Ok(obj)
+    }
 }

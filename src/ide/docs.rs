@@ -957,15 +957,15 @@ pub const DOCS: &[Doc] = &[
         "media_attenuation on|off",
         "Whether atmospheric media and fog dim the light on its way (default off; media in objects always do).",
     ),
-    later(
+    kw(
         "global_lights",
-        "global_lights on|off",
-        "Whether scene lights also light a light_group.",
+        "light_group { … global_lights on }",
+        "Whether the scene's other lights also light a light_group's objects (default off).",
     ),
-    later(
+    kw(
         "light_group",
-        "light_group { LIGHTS OBJECTS }",
-        "Lights that light only the objects of the group.",
+        "light_group { light_source { … } OBJECTS [global_lights on] }",
+        "Lights that light only the objects of the group (nested groups inherit them); a union otherwise.",
     ),
     // subsurface scattering (read, ignored)
     kw(

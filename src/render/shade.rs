@@ -315,6 +315,10 @@ fn shade_texture(
         };
         let mut layer = (ambient + f.emission) * colour * opacity;
         for light in 0..world.lights.len() {
+            // A light_group's lights light only its objects (see `Light::reaches`).
+            if !world.lights[light].reaches(&s.flags) {
+                continue;
+            }
             if let Some(inc) = lights::incident(world, light, p, geo_n, n, ctx) {
                 layer += direct(
                     f,

@@ -36,6 +36,9 @@ pub struct Light {
     pub looks_like: Option<Arc<Object>>,
     /// Where the light was written.
     pub span: Span,
+    /// The `light_group` (bit index of [`super::ObjectFlags::light_groups`])
+    /// whose objects alone this light lights; `None`: a scene light.
+    pub group: Option<u8>,
 }
 
 impl Default for Light {
@@ -55,6 +58,19 @@ impl Default for Light {
             area: None,
             looks_like: None,
             span: Span::default(),
+            group: None,
+        }
+    }
+}
+
+impl Light {
+    /// Whether this light lights an object with `flags`: a group's light only
+    /// the group's objects; a scene light every object outside groups, and a
+    /// group's objects when the group says `global_lights on`.
+    pub fn reaches(&self, flags: &super::ObjectFlags) -> bool {
+        match self.group {
+            Some(g) => flags.light_groups & (1u64 << g) != 0,
+            None => flags.light_groups == 0 || flags.global_lights == Some(true),
         }
     }
 }

@@ -25,6 +25,12 @@ pub struct ObjectFlags {
     /// `radiosity { importance F }` in ten-thousandths (1 to 10 000); `None`:
     /// inherited from an enclosing CSG object, else 1.
     pub importance: Option<u16>,
+    /// The `light_group`s the object is in, one bit per group (see
+    /// [`super::Light::group`]); 0: in none, lit by the scene's lights.
+    pub light_groups: u64,
+    /// `global_lights` of the innermost `light_group` the object is in
+    /// (`None` outside groups).
+    pub global_lights: Option<bool>,
 }
 
 /// One object: a shape, its placement and its material.

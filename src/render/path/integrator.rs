@@ -208,8 +208,12 @@ pub fn radiance(
         }
         // Next-event estimation.
         if bsdf.has_smooth_lobes() {
+            let flags = &world.primitives[hit.prim as usize].flags;
             for light in &world.lights {
                 let u = sampler.next_2d();
+                if !light.reaches(flags) {
+                    continue;
+                }
                 let Some(ls) = lights::sample(light, p, u) else {
                     continue;
                 };
