@@ -234,6 +234,16 @@ impl Evaluator<'_> {
         self.to_float(&v, s)
     }
 
+    /// The optional on/off after a flag keyword (`hollow`, `global_lights on`):
+    /// `true` when no value follows.
+    pub(crate) fn take_switch(&mut self, c: &mut Cursor) -> R<bool> {
+        if c.value_next() {
+            Ok(self.take_float(c, "on or off")? != 0.0)
+        } else {
+            Ok(true)
+        }
+    }
+
     /// The next value as a 3-vector (floats promote).
     pub(crate) fn take_vec3(&mut self, c: &mut Cursor, what: &str) -> R<DVec3> {
         let (v, s) = c.value(what)?;

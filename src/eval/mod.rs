@@ -418,8 +418,7 @@ impl Evaluator<'_> {
                     )),
                 );
             }
-            self.scene.global.legacy_filter = self.language_version.is_none_or(|v| v < 3.7);
-            self.scene.global.legacy_ambient = self.scene.global.legacy_filter;
+            self.scene.global.pre_3_7 = self.language_version.is_none_or(|v| v < 3.7);
             if self.scene.global.assumed_gamma.is_none() {
                 // POV-Ray 3.7 assumes 1.0 in a 3.7 scene; in a scene of an older
                 // version, or of none, it turns gamma handling off (measured).

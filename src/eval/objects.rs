@@ -340,11 +340,7 @@ impl Evaluator<'_> {
         };
         if matches!(tok, Tok::Kw("global_lights", _)) && c.block == "light_group" {
             // After a light_group's transforms too, as POV-Ray allows.
-            obj.flags.global_lights = Some(if c.value_next() {
-                self.take_float(c, "on or off")? != 0.0
-            } else {
-                true
-            });
+            obj.flags.global_lights = Some(self.take_switch(c)?);
             return Ok(());
         }
         if let (Tok::Kw(kw, _), Shape::Isosurface(iso)) = (&tok, &mut obj.shape) {
@@ -466,11 +462,7 @@ impl Evaluator<'_> {
             Tok::Kw("inverse", _) => obj.flags.inverse = !obj.flags.inverse,
             Tok::Kw(kw @ ("hollow" | "double_illuminate" | "sturm"), _) => {
                 // `sturm` is accepted: the torus solver is always the careful one.
-                let on = if c.value_next() {
-                    self.take_float(c, "on or off")? != 0.0
-                } else {
-                    true
-                };
+                let on = self.take_switch(c)?;
                 match kw {
                     "hollow" => obj.flags.hollow = on,
                     "double_illuminate" => obj.flags.double_illuminate = on,
@@ -753,11 +745,7 @@ impl Evaluator<'_> {
                 },
                 Some(Tok::Kw("global_lights", _)) => {
                     c.next();
-                    global = if c.value_next() {
-                        self.take_float(c, "on or off")? != 0.0
-                    } else {
-                        true
-                    };
+                    global = self.take_switch(c)?;
                 }
                 _ => break,
             }

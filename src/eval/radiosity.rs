@@ -151,11 +151,7 @@ impl Evaluator<'_> {
                 }),
                 Tok::Kw(kw @ ("always_sample" | "media" | "normal" | "subsurface"), span) => {
                     c.once(kw, span).and_then(|()| {
-                        let on = if c.value_next() {
-                            self.take_float(c, "on or off")? != 0.0
-                        } else {
-                            true
-                        };
+                        let on = self.take_switch(c)?;
                         match kw {
                             "always_sample" => r.always_sample = on,
                             "media" => r.media = on,

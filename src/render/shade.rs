@@ -271,7 +271,7 @@ fn shade_texture(
         // above 1 make the opacity negative, so the surface's own light is
         // subtracted from the amplified light behind it (advanced/bwstripe.pov's
         // threshold lens; measured: rgb 0.5 transmit 2 over 0.6 gives 2·0.6 − 0.5).
-        let filter_share = if world.global.legacy_filter {
+        let filter_share = if world.global.pre_3_7 {
             colour.max_element()
         } else {
             1.0
@@ -282,7 +282,7 @@ fn shade_texture(
             // `diffuse` (a 3.7 scene's `ambient` then counts for nothing; an
             // older scene's still adds; both measured on POV-Ray 3.7).
             Some(rs) => {
-                let legacy = if world.global.legacy_ambient {
+                let legacy = if world.global.pre_3_7 {
                     f.ambient * world.global.ambient_light
                 } else {
                     DVec3::ZERO

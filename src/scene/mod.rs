@@ -85,10 +85,12 @@ pub struct GlobalSettings {
     /// gamma handling off, and the classic renderer writes the working values to
     /// the file as they are (unless `--gamma` is given).
     pub gamma_off: bool,
-    /// A scene of a version before 3.7, or of none: a filtering surface's own
-    /// light is scaled by `1 - filter·max(r, g, b) - transmit` instead of 3.7's
-    /// `1 - filter - transmit` (POV-Ray 3.7 measured both ways).
-    pub legacy_filter: bool,
+    /// A scene of a version before 3.7, or of none (POV-Ray 3.7 measured both
+    /// ways): a filtering surface's own light is scaled by
+    /// `1 - filter·max(r, g, b) - transmit` instead of 3.7's
+    /// `1 - filter - transmit`, and under radiosity a finish's `ambient` still
+    /// adds `ambient · ambient_light` (in 3.7 scenes it counts for nothing).
+    pub pre_3_7: bool,
     /// `max_trace_level`: deepest recursion of reflected rays (default 5).
     pub max_trace_level: u32,
     /// `adc_bailout`: rays whose contribution falls below this are not traced further
@@ -103,10 +105,6 @@ pub struct GlobalSettings {
     pub path_tracing: Option<PathTracing>,
     /// `radiosity { … }`: gather indirect diffuse light (the classic renderer).
     pub radiosity: Option<Radiosity>,
-    /// The scene's `#version` is before 3.7 (or not given): under radiosity a
-    /// finish's `ambient` still adds `ambient · ambient_light` (in 3.7 scenes it
-    /// counts for nothing; both measured on POV-Ray 3.7).
-    pub legacy_ambient: bool,
 }
 
 impl Default for GlobalSettings {
@@ -115,14 +113,13 @@ impl Default for GlobalSettings {
             ambient_light: DVec3::ONE,
             assumed_gamma: None,
             gamma_off: false,
-            legacy_filter: false,
+            pre_3_7: false,
             max_trace_level: 5,
             adc_bailout: 1.0 / 255.0,
             noise_generator: 2,
             number_of_waves: 10,
             path_tracing: None,
             radiosity: None,
-            legacy_ambient: false,
         }
     }
 }

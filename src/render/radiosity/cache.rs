@@ -109,6 +109,11 @@ impl Cache {
         self.samples.is_empty()
     }
 
+    /// The values, in the order they were added.
+    pub fn into_samples(self) -> Vec<Sample> {
+        self.samples
+    }
+
     /// Adds a value.
     pub fn push(&mut self, s: Sample) {
         let reach = (s.r * self.reach).max(1e-12);

@@ -50,8 +50,19 @@ pub struct Local {
     /// 0 on surfaces the camera sees (directly or by reflection and
     /// refraction); `k` on what the rays gathering bounce `k − 1` meet.
     pub depth: u32,
-    /// Values this pixel gathered in the current pretrace pass.
-    pub fresh: Vec<Sample>,
+    /// Values this pixel gathered in the current pretrace wave, indexed as
+    /// the shared cache is (a pixel can gather thousands on deep bounces).
+    pub fresh: Cache,
+}
+
+impl Local {
+    /// For a pretrace pixel under `set`.
+    pub fn pretrace(set: &Radiosity) -> Local {
+        Local {
+            depth: 0,
+            fresh: Cache::new(set.error_bound),
+        }
+    }
 }
 
 impl State<'_> {
@@ -96,9 +107,7 @@ pub fn irradiance(world: &World, rs: &State, at: Spot, level: u32, ctx: &mut Tra
     let eb = rs.error_bound(depth);
     let mut blend = Blend::default();
     rs.cache.blend(p, n, depth, eb, &mut blend);
-    for s in ctx.rad.fresh.iter().filter(|s| s.depth == depth) {
-        blend.add(s, p, n, eb);
-    }
+    ctx.rad.fresh.blend(p, n, depth, eb, &mut blend);
     // On the surfaces the camera sees, the pretrace (and, with
     // `always_sample`, the final render) gathers where fewer than
     // `nearest_count` values blend; otherwise a value is gathered only where
@@ -202,7 +211,9 @@ fn gather(world: &World, rs: &State, at: Spot, level: u32, ctx: &mut TraceCtx) -
     }
 }
 
-/// Two unit vectors completing `n` to an orthonormal frame.
+/// Two unit vectors completing `n` to an orthonormal frame (not glam's
+/// `any_orthonormal_pair`: its frame turns the gathering directions, so every
+/// radiosity picture would change at the noise level).
 fn frame(n: DVec3) -> (DVec3, DVec3) {
     let t = if n.x.abs() < 0.9 { DVec3::X } else { DVec3::Y };
     let t1 = n.cross(t).normalize();
@@ -213,16 +224,9 @@ fn frame(n: DVec3) -> (DVec3, DVec3) {
 fn hash(p: DVec3, depth: u32) -> u64 {
     let mut h = u64::from(depth) ^ 0x2545_f491_4f6c_dd1d;
     for v in [p.x, p.y, p.z] {
-        h = mix(h ^ v.to_bits());
+        h = super::sampler::mix(h ^ v.to_bits());
     }
     h
-}
-
-fn mix(mut z: u64) -> u64 {
-    z = z.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    z ^ (z >> 31)
 }
 
 /// Block sizes of the pretrace passes, in pixels: `pretrace_start` of the
@@ -298,7 +302,7 @@ pub fn pretrace(
             }
             for (fresh, rays) in found {
                 *stats += rays;
-                for s in fresh {
+                for s in fresh.into_samples() {
                     cache.push(s);
                 }
             }
@@ -352,14 +356,14 @@ fn trace_wave(
     centres: &[(f64, f64)],
     (width, height): (u32, u32),
     (seed, frame, pass): (u64, u32, u32),
-) -> Vec<(Vec<Sample>, RayStats)> {
+) -> Vec<(Cache, RayStats)> {
     wave.par_iter()
         .map(|&k| {
             let (x, y) = centres[k];
             let mut sampler = Sampler::new(seed, frame, x as u32, y as u32, 0x7ad0_0000 + pass);
             let mut rays = RayStats::default();
             let Some(ray) = primary_ray(&world.camera, x, y, width, height, &mut sampler) else {
-                return (Vec::new(), rays);
+                return (Cache::default(), rays);
             };
             rays.camera += 1;
             let mut ctx = TraceCtx {
@@ -372,7 +376,7 @@ fn trace_wave(
                 },
                 passes: 0,
                 radiosity: Some(state),
-                rad: Local::default(),
+                rad: Local::pretrace(&state.settings),
             };
             trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0, &mut ctx);
             let fresh = std::mem::take(&mut ctx.rad.fresh);
