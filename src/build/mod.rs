@@ -212,6 +212,7 @@ fn or_flags(a: ObjectFlags, b: ObjectFlags) -> ObjectFlags {
         // says whether the scene's lights count too.
         light_groups: a.light_groups | b.light_groups,
         global_lights: b.global_lights.or(a.global_lights),
+        photons: crate::scene::ObjectPhotons::inherit(a.photons, b.photons),
     }
 }
 

@@ -30,6 +30,8 @@ pub fn progress_bar(progress: &Progress, done: &AtomicBool) {
         let total = progress.total.load(Ordering::Relaxed);
         bar.set_message(if progress.pretrace.load(Ordering::Relaxed) {
             "radiosity pretrace"
+        } else if progress.photons.load(Ordering::Relaxed) {
+            "shooting photons"
         } else {
             "rendering"
         });
@@ -161,6 +163,12 @@ impl Report<'_> {
             },
             self.mrays_per_s()
         );
+        if self.stats.photons_shot > 0 {
+            s += &format!(
+                "  photons: {} shot, {} stored\n",
+                self.stats.photons_shot, self.stats.photons_stored
+            );
+        }
         s += &format!(
             "  time: parse+eval {:.3}s, build {:.3}s, render {:.3}s, write {:.3}s, total {:.3}s",
             t.parse_eval.as_secs_f64(),
@@ -219,6 +227,10 @@ impl Report<'_> {
                 "shadow": r.shadow,
                 "radiosity": r.radiosity,
                 "total": r.total(),
+            },
+            "photons": {
+                "shot": self.stats.photons_shot,
+                "stored": self.stats.photons_stored,
             },
             "mrays_per_s": self.mrays_per_s(),
             "seconds": {

@@ -50,6 +50,7 @@ pub(crate) const BLOCKS: &[&str] = &[
     "camera_path",
     "path_tracing",
     "radiosity",
+    "photons",
     "function",
     "contained_by",
     "warp",
@@ -65,9 +66,6 @@ pub(crate) const BLOCKS: &[&str] = &[
     "subsurface",
 ];
 
-/// POV-Ray blocks that a later release implements.
-const LATER_BLOCKS: &[&str] = &["photons"];
-
 /// Whether `k` opens a block this release evaluates.
 pub(crate) fn is_evaluated_block(k: &str) -> bool {
     BLOCKS.contains(&k) || OBJECT_BLOCKS.contains(&k)
@@ -75,7 +73,7 @@ pub(crate) fn is_evaluated_block(k: &str) -> bool {
 
 /// Whether `k` opens a block (`k { … }`).
 pub(crate) fn is_block_keyword(k: &str) -> bool {
-    is_evaluated_block(k) || LATER_BLOCKS.contains(&k)
+    is_evaluated_block(k)
 }
 
 impl Evaluator<'_> {
@@ -83,25 +81,15 @@ impl Evaluator<'_> {
     pub(crate) fn block(&mut self, b: &Block) -> R<Option<Value>> {
         let kw = b.keyword.name;
         if !is_evaluated_block(kw) {
-            let d = if LATER_BLOCKS.contains(&kw) {
-                Diagnostic::error(
-                    codes::UNSUPPORTED,
-                    b.keyword.span,
-                    format!("`{kw}` is not implemented in rts yet"),
-                )
-                .with_label("POV-Ray feature not yet supported")
-                .with_help("see docs/language.md for what this release supports")
-            } else {
-                Diagnostic::error(
-                    codes::UNEXPECTED_ITEM,
-                    b.keyword.span,
-                    format!("`{kw}` does not take a `{{ }}` block"),
-                )
-                .with_help(format!(
-                    "write `{kw}` followed by its value, without braces"
-                ))
-            };
-            return Err(d.into());
+            return Err(Diagnostic::error(
+                codes::UNEXPECTED_ITEM,
+                b.keyword.span,
+                format!("`{kw}` does not take a `{{ }}` block"),
+            )
+            .with_help(format!(
+                "write `{kw}` followed by its value, without braces"
+            ))
+            .into());
         }
         if kw == "function" {
             // Its body is compiled, not evaluated.
@@ -197,6 +185,7 @@ impl Evaluator<'_> {
             "tiles" => Value::Texture(std::sync::Arc::new(self.tiles(&mut c)?)),
             "material" => Value::Material(std::sync::Arc::new(self.material(&mut c)?)),
             "radiosity" => Value::Radiosity(std::sync::Arc::new(self.radiosity_block(&mut c)?)),
+            "photons" => Value::Photons(std::sync::Arc::new(self.photons_block(&mut c)?)),
             "path_tracing" => {
                 self.path_tracing(&mut c)?;
                 return Ok(None);

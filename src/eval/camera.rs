@@ -500,14 +500,25 @@ impl Evaluator<'_> {
                         Ok(())
                     }
                 },
-                // The block itself was reported where it was read.
-                Tok::Block("photons", _, _) => Ok(()),
-                Tok::Kw(kw @ "photons", span) => Err(Diagnostic::error(
-                    codes::UNSUPPORTED,
-                    span,
-                    format!("`{kw}` is not implemented in rts yet"),
-                )
-                .into()),
+                Tok::Block("photons", Value::Photons(b), span) => {
+                    self.photons_for(&b, super::photons::PhotonsIn::Global, span);
+                    let mut settings = b.global;
+                    if !b.items.iter().any(|(k, _)| matches!(*k, "spacing" | "count")) {
+                        // POV-Ray then shoots a handful of photons: none here.
+                        settings.density = crate::scene::PhotonDensity::Count(0);
+                        self.warn(
+                            Diagnostic::warning(
+                                codes::MISSING_VALUE,
+                                span,
+                                "this photons block has neither `spacing` nor `count`: no photons are shot",
+                            )
+                            .with_label("no photon density")
+                            .with_help("add `spacing 0.01` (the distance between photons) or `count 20000`"),
+                        );
+                    }
+                    self.scene.global.photons = Some(settings);
+                    Ok(())
+                }
                 Tok::Kw("noise_generator", span) => self.noise_generator(c, span),
                 Tok::Kw("number_of_waves", _) => {
                     c.value("the number of wave centres").and_then(|(v, s)| {

@@ -26,6 +26,7 @@ pub(crate) const LIGHT_ITEMS: &[&str] = &[
     "fade_power",
     "looks_like",
     "shadowless",
+    "photons",
     "media_interaction",
     "media_attenuation",
     "translate",
@@ -34,7 +35,7 @@ pub(crate) const LIGHT_ITEMS: &[&str] = &[
     "matrix",
     "transform",
 ];
-const LATER_LIGHT: &[&str] = &["photons", "projected_through", "area_illumination"];
+const LATER_LIGHT: &[&str] = &["projected_through", "area_illumination"];
 
 /// A light's number parameter that must not be negative.
 fn out_of_range(span: Span, msg: String, help: &str) -> Fail {
@@ -224,6 +225,15 @@ impl Evaluator<'_> {
                     .map(|t| move_light(&mut light, &mut transform, &t)),
                 Tok::Block(_, Value::Transform(t), _) => {
                     move_light(&mut light, &mut transform, &t);
+                    Ok(())
+                }
+                Tok::Block("photons", Value::Photons(b), span) => {
+                    self.photons_for(&b, super::photons::PhotonsIn::Light, span);
+                    light.photons = crate::scene::LightPhotons {
+                        refraction: b.light_refraction.unwrap_or(true),
+                        reflection: b.light_reflection.unwrap_or(true),
+                        area_light: b.area_light,
+                    };
                     Ok(())
                 }
                 Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_LIGHT.contains(&kw) => {

@@ -30,6 +30,7 @@ mod mesh_camera;
 mod modify;
 mod objects;
 mod path_tracing;
+mod photons;
 mod pattern_blocks;
 mod patterns;
 mod radiosity;

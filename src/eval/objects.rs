@@ -29,6 +29,7 @@ pub(crate) const OBJECT_MODIFIERS: &[&str] = &[
     "no_reflection",
     "no_radiosity",
     "radiosity",
+    "photons",
     "inverse",
     "hollow",
     "double_illuminate",
@@ -440,7 +441,11 @@ impl Evaluator<'_> {
                 tex.finish = *f;
                 obj.texture = Some(Arc::new(tex));
             }
-            Tok::Kw("no_shadow", _) => obj.flags.no_shadow = true,
+            Tok::Kw("no_shadow", _) => {
+                // Photons pass through shadowless objects (POV-Ray's rule).
+                obj.flags.no_shadow = true;
+                obj.flags.photons.pass_through = true;
+            }
             Tok::Kw("no_image", _) => obj.flags.no_image = true,
             Tok::Kw("no_reflection", _) => obj.flags.no_reflection = true,
             Tok::Kw("no_radiosity", _) => obj.flags.no_radiosity = true,
@@ -458,6 +463,16 @@ impl Evaluator<'_> {
                 if let Some((x, _)) = b.importance {
                     obj.flags.importance = Some((x * 10_000.0).round().clamp(1.0, 10_000.0) as u16);
                 }
+            }
+            Tok::Block("photons", Value::Photons(b), span) => {
+                self.photons_for(&b, super::photons::PhotonsIn::Object, span);
+                let own = b.object;
+                obj.flags.photons = crate::scene::ObjectPhotons {
+                    // `no_shadow` makes photons pass unless the block says otherwise.
+                    pass_through: own.pass_through
+                        || (obj.flags.photons.pass_through && !b.pass_through_off),
+                    ..own
+                };
             }
             Tok::Kw("inverse", _) => obj.flags.inverse = !obj.flags.inverse,
             Tok::Kw(kw @ ("hollow" | "double_illuminate" | "sturm"), _) => {

@@ -156,6 +156,8 @@ pub enum Value {
     ObjectPattern(std::rc::Rc<(crate::scene::PatternKind, ObjectPatternEntries)>),
     /// A `radiosity { … }` block: global settings or an object's importance.
     Radiosity(Arc<crate::scene::RadiosityBlock>),
+    /// A `photons { … }` block: global settings, an object's or a light's.
+    Photons(Arc<crate::scene::PhotonsBlock>),
     /// A light source.
     Light(Arc<Light>),
     /// A `sky_sphere { … }`.
@@ -227,6 +229,7 @@ impl Value {
             Value::Camera(_) => "a camera",
             Value::MeshCamera(_) => "a mesh_camera block",
             Value::Radiosity(_) => "a radiosity block",
+            Value::Photons(_) => "a photons block",
             Value::ObjectPattern(_) => "an object pattern",
             Value::Light(_) => "a light source",
             Value::SkySphere(_) => "a sky_sphere",

@@ -1205,7 +1205,66 @@ pub const DOCS: &[Doc] = &[
         "sphere { … no_radiosity }",
         "The object is invisible to radiosity's gathering rays.",
     ),
-    later("photons", "photons { … }", "Photon mapping for caustics."),
+    kw(
+        "photons",
+        "global_settings { photons { spacing 0.01 } }  ·  sphere { … photons { target refraction on reflection on collect off } }  ·  light_source { … photons { refraction off } }",
+        "Photon mapping: lights shoot photons at `target` objects; photons they reflect or refract are stored where they land and light those surfaces (caustics).",
+    ),
+    kw(
+        "spacing",
+        "photons { spacing 0.01 }",
+        "Photons: about this distance between photons where they reach a target (times the target's multiplier).",
+    ),
+    kw(
+        "gather",
+        "photons { gather 20, 100 }",
+        "Photons: the fewest photons an estimate gathers (the search radius grows until it has them) and the most it uses.",
+    ),
+    kw(
+        "autostop",
+        "photons { autostop 0 }",
+        "Photons: accepted for POV-Ray scenes; rts always covers a target's whole bounding sphere.",
+    ),
+    kw(
+        "expand_thresholds",
+        "photons { expand_thresholds 0.2, 40 }",
+        "Photons: accepted for POV-Ray scenes; rts grows the gather radius until `gather`'s minimum is met.",
+    ),
+    kw(
+        "save_file",
+        "photons { save_file \"scene.ph\" }",
+        "Photons: read but ignored (rts shoots the photons for every render), with a warning.",
+    ),
+    kw(
+        "load_file",
+        "photons { load_file \"scene.ph\" }",
+        "Photons: read but ignored (rts shoots the photons for every render), with a warning.",
+    ),
+    kw(
+        "target",
+        "photons { target [MULTIPLIER] }",
+        "Photons: lights shoot photons at this object, `spacing × MULTIPLIER` apart (default 1).",
+    ),
+    kw(
+        "refraction",
+        "photons { refraction on }",
+        "Photons: an object passes photons through, bent by its ior and tinted by filter/transmit; a light's `refraction off` keeps its photons from refracting.",
+    ),
+    kw(
+        "collect",
+        "photons { collect off }",
+        "Photons: photons are neither stored on nor gathered from this object (use it on glass and mirrors).",
+    ),
+    kw(
+        "pass_through",
+        "photons { pass_through }",
+        "Photons: photons on their way to a target pass through this object unaffected (`no_shadow` implies it).",
+    ),
+    kw(
+        "split_union",
+        "photons { split_union off }",
+        "Photons: accepted for POV-Ray scenes; rts shoots at each part of a union separately.",
+    ),
     kw(
         "media",
         "media { absorption C emission C scattering { … } density { … } method intervals samples … }",

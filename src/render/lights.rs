@@ -135,7 +135,10 @@ pub fn shadow(
         let cell = &hints[light % HINT_SLOTS];
         let mut hint = cell.get();
         // Filtered by transparent surfaces on the way (0 behind opaque ones).
-        let seen = super::shade::shadow_filter(world, &ray, eps, dist - eps, &mut hint);
+        let photon_light = world.global.photons.is_some()
+            && world.lights.get(light).is_some_and(|l| l.photons.refraction);
+        let seen =
+            super::shade::shadow_filter(world, &ray, eps, dist - eps, &mut hint, photon_light);
         cell.set(hint);
         seen
     })

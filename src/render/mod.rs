@@ -16,6 +16,7 @@ mod lights;
 mod media;
 mod passes;
 pub mod path;
+pub mod photons;
 pub(crate) mod pigment;
 pub mod radiosity;
 mod sampler;
@@ -98,6 +99,8 @@ pub struct Progress {
     pub total: AtomicU64,
     /// Radiosity's pretrace is running (`done`/`total` then count its pixels).
     pub pretrace: std::sync::atomic::AtomicBool,
+    /// Photons are being shot (before anything else).
+    pub photons: std::sync::atomic::AtomicBool,
 }
 
 /// Counts from one render; the same for any number of threads.
@@ -112,6 +115,10 @@ pub struct RenderStats {
     pub samples: u64,
     /// Pixels adaptive anti-aliasing supersampled.
     pub supersampled: u64,
+    /// Photons shot from the lights.
+    pub photons_shot: u64,
+    /// Photons stored where they landed.
+    pub photons_stored: u64,
 }
 
 impl std::ops::AddAssign for RenderStats {
@@ -120,6 +127,8 @@ impl std::ops::AddAssign for RenderStats {
         self.pixels += o.pixels;
         self.samples += o.samples;
         self.supersampled += o.supersampled;
+        self.photons_shot += o.photons_shot;
+        self.photons_stored += o.photons_stored;
     }
 }
 
@@ -169,6 +178,17 @@ pub fn render_with(
     let crop = resolve_crop(settings, w, h);
     let (cw, ch) = (crop.x1 - crop.x0, crop.y1 - crop.y0);
     let sampling = settings.sampling;
+    // Photons: shot first; radiosity's gathering sees their light too.
+    let shot = match (world.global.photons, settings.pass) {
+        (Some(_), Pass::Beauty) if cw > 0 && ch > 0 => {
+            if let Some(p) = progress {
+                p.photons.store(true, Ordering::Relaxed);
+            }
+            Some(photons::shoot(world, settings.seed))
+        }
+        _ => None,
+    };
+    let photon_map = shot.as_ref().map(|s| &s.map);
     // Radiosity: the pretrace fills the cache the render then reads.
     let mut pretrace_rays = RayStats::default();
     let cache = match (world.global.radiosity, settings.pass) {
@@ -179,6 +199,7 @@ pub fn render_with(
             (settings.seed, settings.frame),
             &mut pretrace_rays,
             progress,
+            photon_map,
         )),
         _ => None,
     };
@@ -188,6 +209,7 @@ pub fn render_with(
             cache,
             eye: world.camera.location,
             pretrace: false,
+            photons: photon_map,
         })
     });
     let r = Renderer {
@@ -198,6 +220,7 @@ pub fn render_with(
         max_depth: 0.0,
         blur_z: focal_blur::quantile(world.camera.confidence),
         radiosity: rad_state.as_ref(),
+        photons: photon_map,
     };
     let max_depth = match settings.pass {
         Pass::Depth { max: Some(m) } => m,
@@ -215,6 +238,7 @@ pub fn render_with(
         p.total.store(units, Ordering::Relaxed);
         p.done.store(0, Ordering::Relaxed);
         p.pretrace.store(false, Ordering::Relaxed);
+        p.photons.store(false, Ordering::Relaxed);
     }
     let tick = || {
         if let Some(p) = progress {
@@ -224,6 +248,10 @@ pub fn render_with(
     let mut pixels = vec![DVec3::ZERO; cw as usize * ch as usize];
     let mut stats = RenderStats::default();
     stats.rays += pretrace_rays;
+    if let Some(s) = &shot {
+        stats.photons_shot = s.shot;
+        stats.photons_stored = s.map.len() as u64;
+    }
     if cw == 0 || ch == 0 {
         return Rendered {
             film: Film {
@@ -316,6 +344,8 @@ struct Renderer<'a> {
     blur_z: f64,
     /// Radiosity's cache, read-only during the render.
     radiosity: Option<&'a radiosity::State<'a>>,
+    /// The photons shot before the render.
+    photons: Option<&'a photons::PhotonMap>,
 }
 
 impl Renderer<'_> {
@@ -415,6 +445,7 @@ impl Renderer<'_> {
             passes: 0,
             radiosity: self.radiosity,
             rad: radiosity::Local::default(),
+            photons: self.photons,
         };
         trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0, &mut ctx)
     }
@@ -500,7 +531,8 @@ impl Renderer<'_> {
 }
 
 /// The working-space colour of pixel (`i`, `j`), `j = 0` at the top, from one ray
-/// through its centre (radiosity, which needs its pretrace, left out).
+/// through its centre (radiosity and photons, which need their passes before
+/// the render, left out).
 pub fn render_pixel(world: &World, i: u32, j: u32, width: u32, height: u32) -> DVec3 {
     let settings = Settings::default();
     let r = Renderer {
@@ -511,6 +543,7 @@ pub fn render_pixel(world: &World, i: u32, j: u32, width: u32, height: u32) -> D
         max_depth: 0.0,
         blur_z: focal_blur::quantile(world.camera.confidence),
         radiosity: None,
+        photons: None,
     };
     r.centre(i, j, &mut RenderStats::default())
 }

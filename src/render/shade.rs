@@ -27,6 +27,8 @@ pub struct TraceCtx<'a> {
     pub radiosity: Option<&'a super::radiosity::State<'a>>,
     /// Which radiosity bounce this ray serves, and what the pretrace gathered.
     pub rad: super::radiosity::Local,
+    /// The photons shot before the render, when the scene has `photons { }`.
+    pub photons: Option<&'a super::photons::PhotonMap>,
 }
 
 /// How many surfaces a ray may pass straight through (transmitted without a
@@ -254,6 +256,8 @@ fn shade_texture(
     let mut last_n = facing(s.normal);
     // Radiosity's gathered light, looked up once for all layers.
     let mut gathered: Option<DVec3> = None;
+    // The photons' light, likewise.
+    let mut caustic: Option<DVec3> = None;
     for tex in layers(tex) {
         let c = pigment::evaluate_uv(&tex.pigment, tp, s.uv);
         let n = match &tex.normal {
@@ -348,6 +352,15 @@ fn shade_texture(
                 }
             }
         }
+        // Caustics: the light of the photons stored near the point, taken as
+        // `diffuse` takes a light's (measured on POV-Ray 3.7: no further
+        // cosine; the photons' density already holds it).
+        if let Some(map) = ctx.photons.filter(|_| !s.flags.photons.no_collect) {
+            if f.diffuse != 0.0 && colour != DVec3::ZERO && opacity != 0.0 {
+                let e = *caustic.get_or_insert_with(|| map.irradiance(p, facing(geo_n)));
+                layer += f.diffuse * e * colour * opacity;
+            }
+        }
         let r = &f.reflection;
         if r.min != DVec3::ZERO || r.max != DVec3::ZERO {
             let cos_v = -n.dot(d);
@@ -422,7 +435,7 @@ fn shade_texture(
 /// Where a ray through a surface goes on: along unit direction `d` unbent when
 /// `ior` is 1, else refracted (a camera-kind ray) or, under total internal
 /// reflection, reflected (`n`: the shading normal facing the viewer).
-fn bend(d: DVec3, n: DVec3, entering: bool, ior: f64) -> (DVec3, RayKind) {
+pub(super) fn bend(d: DVec3, n: DVec3, entering: bool, ior: f64) -> (DVec3, RayKind) {
     if ior == 1.0 {
         return (d, RayKind::Camera);
     }
@@ -512,7 +525,7 @@ fn transmitted(
 /// `fade_distance` and `fade_power`, as POV-Ray 3.7 computes it (measured):
 /// `1 / (1 + (dist / fade_distance)^fade_power)`, and for a power of 1000 or
 /// more the physical `exp(-dist / fade_distance)`.
-fn interior_fade(dist: f64, fade_distance: f64, fade_power: f64) -> f64 {
+pub(super) fn interior_fade(dist: f64, fade_distance: f64, fade_power: f64) -> f64 {
     if fade_power >= 1000.0 {
         (-dist / fade_distance).exp()
     } else {
@@ -526,7 +539,20 @@ fn interior_fade(dist: f64, fade_distance: f64, fade_power: f64) -> f64 {
 /// crossed otherwise (POV-Ray's filtered shadows; shadow rays do not bend).
 /// `hint` is a primitive to test first, updated to the blocker found (see
 /// [`World::occluded_hinted`]).
-pub fn shadow_filter(world: &World, ray: &Ray, t_min: f64, t_max: f64, hint: &mut u32) -> DVec3 {
+///
+/// `photon_light`: the light shoots photons that refract (the scene has
+/// `photons { }` and the light does not say `refraction off`); objects that
+/// refract photons then block it fully, since the light through them arrives
+/// as photons (measured on POV-Ray 3.7: a glass sphere that is a photon
+/// target casts a dark shadow round its caustic, and none without photons).
+pub fn shadow_filter(
+    world: &World,
+    ray: &Ray,
+    t_min: f64,
+    t_max: f64,
+    hint: &mut u32,
+    photon_light: bool,
+) -> DVec3 {
     if !world.transparent {
         return if world.occluded_hinted(ray, t_min, t_max, hint) {
             DVec3::ZERO
@@ -542,7 +568,9 @@ pub fn shadow_filter(world: &World, ray: &Ray, t_min: f64, t_max: f64, hint: &mu
     let mut fading: Vec<Crossing> = Vec::new();
     let blocked = world.shadow_crossings(ray, t_min, t_max, hint, |hit| {
         crossings += 1;
-        if crossings >= 64 {
+        if crossings >= 64
+            || (photon_light && world.primitives[hit.prim as usize].flags.photons.refraction)
+        {
             return false;
         }
         let s = world.surface(ray, &hit);
@@ -614,7 +642,7 @@ fn shadow_fade(crossings: &mut [Crossing], t_min: f64, t_max: f64) -> DVec3 {
 /// What passes through the surface `s`: the product of
 /// `filter · colour + transmit` over its texture's layers (a pattern's or a
 /// blob's textures averaged by their weights there).
-fn surface_filter(s: &SurfaceHit) -> DVec3 {
+pub(super) fn surface_filter(s: &SurfaceHit) -> DVec3 {
     let tp = s
         .texture_from_world
         .map_or(s.p, |m| m.transform_point3(s.p));

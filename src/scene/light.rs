@@ -39,6 +39,8 @@ pub struct Light {
     /// The `light_group` (bit index of [`super::ObjectFlags::light_groups`])
     /// whose objects alone this light lights; `None`: a scene light.
     pub group: Option<u8>,
+    /// `photons { … }`: what this light's photons may do.
+    pub photons: super::LightPhotons,
 }
 
 impl Default for Light {
@@ -59,6 +61,7 @@ impl Default for Light {
             looks_like: None,
             span: Span::default(),
             group: None,
+            photons: super::LightPhotons::default(),
         }
     }
 }

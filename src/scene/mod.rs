@@ -15,6 +15,7 @@ mod material;
 mod media;
 mod object;
 mod path;
+mod photons;
 mod radiosity;
 mod transform;
 mod warp;
@@ -34,6 +35,7 @@ pub use material::{ImagePattern, ImageUse, NormalBlend, SlopeSpec};
 pub use media::{Media, Scattering, ScatteringKind};
 pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape, TextData};
 pub use path::{PathTracing, PixelFilter};
+pub use photons::{LightPhotons, ObjectPhotons, PhotonDensity, Photons, PhotonsBlock};
 pub use radiosity::{Radiosity, RadiosityBlock};
 pub use transform::Transform;
 pub use warp::{Fractal, FractalKind, MappingWarp, Warp, WarpStep};
@@ -105,6 +107,9 @@ pub struct GlobalSettings {
     pub path_tracing: Option<PathTracing>,
     /// `radiosity { … }`: gather indirect diffuse light (the classic renderer).
     pub radiosity: Option<Radiosity>,
+    /// `photons { … }`: shoot photons at targets for caustics (the classic
+    /// renderer).
+    pub photons: Option<Photons>,
 }
 
 impl Default for GlobalSettings {
@@ -120,6 +125,7 @@ impl Default for GlobalSettings {
             number_of_waves: 10,
             path_tracing: None,
             radiosity: None,
+            photons: None,
         }
     }
 }

@@ -31,6 +31,8 @@ pub struct ObjectFlags {
     /// `global_lights` of the innermost `light_group` the object is in
     /// (`None` outside groups).
     pub global_lights: Option<bool>,
+    /// `photons { … }`: target, reflection, refraction, collect, pass-through.
+    pub photons: super::ObjectPhotons,
 }
 
 /// One object: a shape, its placement and its material.

@@ -41,6 +41,8 @@ pub struct State<'a> {
     /// A pretrace pass (gathers where fewer than `nearest_count` values blend,
     /// under the lowered error bound) rather than the final render.
     pub pretrace: bool,
+    /// The photons shot before the render (their light is gathered too).
+    pub photons: Option<&'a super::photons::PhotonMap>,
 }
 
 /// Per camera sample: which bounce is being gathered and what the pretrace
@@ -257,6 +259,7 @@ pub fn pretrace(
     (seed, frame): (u64, u32),
     stats: &mut RayStats,
     progress: Option<&Progress>,
+    photons: Option<&super::photons::PhotonMap>,
 ) -> Cache {
     let Some(set) = world.global.radiosity else {
         return Cache::default();
@@ -288,6 +291,7 @@ pub fn pretrace(
                 cache: &cache,
                 eye: world.camera.location,
                 pretrace: true,
+                photons,
             };
             let found = trace_wave(
                 world,
@@ -377,6 +381,7 @@ fn trace_wave(
                 passes: 0,
                 radiosity: Some(state),
                 rad: Local::pretrace(&state.settings),
+                photons: state.photons,
             };
             trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0, &mut ctx);
             let fresh = std::mem::take(&mut ctx.rad.fresh);
