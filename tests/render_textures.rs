@@ -557,3 +557,32 @@ box { <1, -1.5, -0.1>, <2, 1.5, 0>
     assert_eq!(at(35, 20), [0.0, 1.0, 0.0], "inside the box (lower half)");
     assert_eq!(at(35, 5), [1.0, 1.0, 1.0], "outside the box (upper half)");
 }
+
+/// A clear box of `ior 1.5` in front of a checkerboard, optionally holding a
+/// sphere.
+fn nested_glass(inner: &str) -> String {
+    format!(
+        "#version 3.7;
+global_settings {{ assumed_gamma 1.0 max_trace_level 10 }}
+camera {{ location <0, 0, -5> look_at 0 angle 30 }}
+plane {{ z, 3 pigment {{ checker rgb 1 rgb 0 scale 0.3 }} finish {{ ambient 1 diffuse 0 }} }}
+box {{ -1, 1 pigment {{ rgbf 1 }} finish {{ ambient 0 diffuse 0 }} interior {{ ior 1.5 }} }}
+{inner}"
+    )
+}
+
+#[test]
+fn nested_interiors_refract_by_the_ratio_of_their_indices() {
+    // Measured on POV-Ray 3.7: a sphere of the glass's own index inside it is
+    // invisible (no change of index at its surface); one of another index is not.
+    let sphere = |ior: f64| {
+        format!(
+            "sphere {{ 0, 0.6 pigment {{ rgbf 1 }} finish {{ ambient 0 diffuse 0 }} interior {{ ior {ior} }} }}"
+        )
+    };
+    let (_, alone) = render("nest_alone", &nested_glass(""), 48, 48);
+    let (_, same) = render("nest_same", &nested_glass(&sphere(1.5)), 48, 48);
+    let (_, other) = render("nest_other", &nested_glass(&sphere(1.2)), 48, 48);
+    assert_eq!(alone, same);
+    assert_ne!(alone, other);
+}

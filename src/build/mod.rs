@@ -98,7 +98,7 @@ pub struct World {
     /// fog, which only act where every such object is hollow).
     pub tracks_interiors: bool,
     /// The primitives whose inside holds the camera's location (when
-    /// `tracks_interiors`).
+    /// `tracks_interiors` or `transparent`: media and indices of refraction).
     pub camera_inside: Vec<u32>,
 }
 
@@ -173,7 +173,8 @@ pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
         tracks_interiors,
         camera_inside: Vec::new(),
     };
-    if tracks_interiors {
+    // Also for refraction: a camera inside glass sees out through its index.
+    if tracks_interiors || world.transparent {
         let at = world.camera.location;
         world.camera_inside = (0..world.primitives.len() as u32)
             .filter(|&i| {

@@ -55,7 +55,7 @@ impl PhotonsIn {
 
     fn name(self) -> &'static str {
         match self {
-            PhotonsIn::Global => "global_settings",
+            PhotonsIn::Global => "the global",
             PhotonsIn::Object => "an object's",
             PhotonsIn::Light => "a light's",
         }
@@ -84,6 +84,10 @@ impl Evaluator<'_> {
             let res: R<()> = match tok {
                 Tok::Kw(kw @ ("spacing" | "count"), span) => {
                     if let Some((prev, at)) = density_given {
+                        // Its value is read (and checked) so it is not
+                        // reported again as out of place.
+                        let mut scratch = PhotonsBlock::default();
+                        let _ = self.photon_density(c, kw, &mut scratch);
                         Err(Diagnostic::error(
                             codes::DUPLICATE_PARAMETER,
                             span,
@@ -221,7 +225,7 @@ impl Evaluator<'_> {
                     let m = if c.value_next() {
                         let (v, s) = c.value("the spacing multiplier")?;
                         let x = self.to_float(&v, s)?;
-                        if !(x > 0.0) {
+                        if x.is_nan() || x <= 0.0 {
                             return Err(Diagnostic::error(
                                 codes::OUT_OF_RANGE,
                                 s,

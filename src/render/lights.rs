@@ -136,7 +136,10 @@ pub fn shadow(
         let mut hint = cell.get();
         // Filtered by transparent surfaces on the way (0 behind opaque ones).
         let photon_light = world.global.photons.is_some()
-            && world.lights.get(light).is_some_and(|l| l.photons.refraction);
+            && world
+                .lights
+                .get(light)
+                .is_some_and(|l| l.photons.refraction);
         let seen =
             super::shade::shadow_filter(world, &ray, eps, dist - eps, &mut hint, photon_light);
         cell.set(hint);

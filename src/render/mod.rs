@@ -11,6 +11,7 @@ mod atmosphere;
 mod camera;
 mod film;
 mod focal_blur;
+pub mod ior;
 mod irid;
 mod lights;
 mod media;
@@ -221,6 +222,7 @@ pub fn render_with(
         blur_z: focal_blur::quantile(world.camera.confidence),
         radiosity: rad_state.as_ref(),
         photons: photon_map,
+        camera_iors: ior::IorStack::at_camera(world),
     };
     let max_depth = match settings.pass {
         Pass::Depth { max: Some(m) } => m,
@@ -346,6 +348,8 @@ struct Renderer<'a> {
     radiosity: Option<&'a radiosity::State<'a>>,
     /// The photons shot before the render.
     photons: Option<&'a photons::PhotonMap>,
+    /// The interiors around the camera.
+    camera_iors: ior::IorStack,
 }
 
 impl Renderer<'_> {
@@ -446,6 +450,7 @@ impl Renderer<'_> {
             radiosity: self.radiosity,
             rad: radiosity::Local::default(),
             photons: self.photons,
+            iors: self.camera_iors,
         };
         trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0, &mut ctx)
     }
@@ -544,6 +549,7 @@ pub fn render_pixel(world: &World, i: u32, j: u32, width: u32, height: u32) -> D
         blur_z: focal_blur::quantile(world.camera.confidence),
         radiosity: None,
         photons: None,
+        camera_iors: ior::IorStack::at_camera(world),
     };
     r.centre(i, j, &mut RenderStats::default())
 }

@@ -29,6 +29,8 @@ pub struct TraceCtx<'a> {
     pub rad: super::radiosity::Local,
     /// The photons shot before the render, when the scene has `photons { }`.
     pub photons: Option<&'a super::photons::PhotonMap>,
+    /// The interiors the ray being traced is in (for indices of refraction).
+    pub iors: super::ior::IorStack,
 }
 
 /// How many surfaces a ray may pass straight through (transmitted without a
@@ -248,7 +250,9 @@ fn shade_texture(
     let ior = s.interior.map_or(1.0, |i| i.ior);
     // Entering when the ray meets the outside of the geometric surface.
     let entering = d.dot(geo_n) < 0.0;
-    let eta_view = if entering { ior } else { 1.0 / ior };
+    // The indices on the near and far side (nested interiors: see `ior`).
+    let (n_near, n_far) = ctx.iors.sides(super::ior::key(s), ior, entering);
+    let eta_view = n_far / n_near;
 
     let mut out = DVec3::ZERO;
     let mut through = DVec3::ONE;
@@ -407,14 +411,14 @@ fn shade_texture(
     let next_weight = weight * through.max_element();
     // Passing straight through a surface costs no trace level (see
     // `MAX_PASSES`); bending through it does.
-    let passes = ior == 1.0 && ctx.passes < MAX_PASSES;
+    let passes = n_near == n_far && ctx.passes < MAX_PASSES;
     if (level >= world.global.max_trace_level && !passes)
         || next_weight < world.global.adc_bailout
         || next_weight <= 0.0
     {
         return out;
     }
-    let (dir, kind) = bend(d, last_n, entering, ior);
+    let (dir, kind) = bend(d, last_n, n_near / n_far);
     // Total internal reflection returns all the light it reflects, whatever
     // the surface's filter and transmit (measured on POV-Ray 3.7: a clear box
     // with transmit 0.9 shows the light it reflects inside unscaled).
@@ -433,13 +437,13 @@ fn shade_texture(
 }
 
 /// Where a ray through a surface goes on: along unit direction `d` unbent when
-/// `ior` is 1, else refracted (a camera-kind ray) or, under total internal
-/// reflection, reflected (`n`: the shading normal facing the viewer).
-pub(super) fn bend(d: DVec3, n: DVec3, entering: bool, ior: f64) -> (DVec3, RayKind) {
-    if ior == 1.0 {
+/// the ratio `eta` of the indices (near side over far side) is 1, else
+/// refracted (a camera-kind ray) or, under total internal reflection,
+/// reflected (`n`: the shading normal facing the viewer).
+pub(super) fn bend(d: DVec3, n: DVec3, eta: f64) -> (DVec3, RayKind) {
+    if eta == 1.0 {
         return (d, RayKind::Camera);
     }
-    let eta = if entering { 1.0 / ior } else { ior };
     match refract(d, n, eta) {
         Some(t) => (t, RayKind::Camera),
         None => (d - 2.0 * d.dot(n) * n, RayKind::Reflected),
@@ -480,6 +484,15 @@ fn transmitted(
     let (next, eps) = Ray::secondary(s.p, s.geo_normal, dir);
     ctx.stats.transmitted += 1;
     // A ray passing through the surface enters or leaves the object.
+    let iors = ctx.iors;
+    if kind == RayKind::Camera {
+        let key = super::ior::key(s);
+        if entering {
+            ctx.iors.enter(key, s.interior.map_or(1.0, |i| i.ior));
+        } else {
+            ctx.iors.leave(key);
+        }
+    }
     let outer = (world.tracks_interiors && kind == RayKind::Camera).then(|| {
         let outer = ctx.media.clone();
         if entering {
@@ -500,6 +513,7 @@ fn transmitted(
     if let Some(outer) = outer {
         ctx.media = outer;
     }
+    ctx.iors = iors;
     // Fading applies to light that crossed the inside: rays leaving it now.
     let inside = (kind == RayKind::Camera) == entering;
     match s.interior {

@@ -71,7 +71,10 @@ impl PhotonMap {
             min,
             max,
             radius,
-            gather: (gather.0.max(1) as usize, gather.1.max(gather.0).max(1) as usize),
+            gather: (
+                gather.0.max(1) as usize,
+                gather.1.max(gather.0).max(1) as usize,
+            ),
         }
     }
 
@@ -214,7 +217,9 @@ mod tests {
     fn nearest_matches_brute_force() {
         let mut s = 12345u64;
         let mut rnd = || {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             ((s >> 40) as f32) / (1u64 << 24) as f32
         };
         let photons: Vec<Photon> = (0..2000).map(|_| photon(rnd(), 0.0, rnd())).collect();
@@ -251,8 +256,14 @@ mod tests {
         let e = map.irradiance(DVec3::new(1.0, 0.0, 1.0), DVec3::Y);
         assert!((e.x - 1.0).abs() < 0.1, "{e}");
         // Seen from below, photons that came down light nothing.
-        assert_eq!(map.irradiance(DVec3::new(1.0, 0.0, 1.0), DVec3::NEG_Y), DVec3::ZERO);
+        assert_eq!(
+            map.irradiance(DVec3::new(1.0, 0.0, 1.0), DVec3::NEG_Y),
+            DVec3::ZERO
+        );
         // Far away: nothing.
-        assert_eq!(map.irradiance(DVec3::new(9.0, 0.0, 9.0), DVec3::Y), DVec3::ZERO);
+        assert_eq!(
+            map.irradiance(DVec3::new(9.0, 0.0, 9.0), DVec3::Y),
+            DVec3::ZERO
+        );
     }
 }

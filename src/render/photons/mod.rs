@@ -21,6 +21,7 @@ mod map;
 
 pub use map::{Photon, PhotonMap};
 
+use super::ior::{self, IorStack};
 use super::lights::{cylinder_attenuation, fade, spot_attenuation};
 use super::pigment;
 use super::sampler::mix;
@@ -191,7 +192,10 @@ pub fn shoot(world: &World, seed: u64) -> Shot {
     let radius = settings.radius.unwrap_or_else(|| {
         // At the spacing photons reach their targets, `gather.1` photons
         // cover a disc of this radius.
-        let m = beams.iter().map(|b| b.multiplier).fold(f64::INFINITY, f64::min);
+        let m = beams
+            .iter()
+            .map(|b| b.multiplier)
+            .fold(f64::INFINITY, f64::min);
         (f64::from(settings.gather_max) / std::f64::consts::PI).sqrt() * spacing * m.min(1e9)
     }) * settings.radius_multiplier;
     Shot {
@@ -271,6 +275,8 @@ struct InFlight<'a> {
     level: u32,
     /// The interior it travels in since its last refraction into an object.
     inside: Option<(u32, &'a Interior)>,
+    /// The interiors it is in (for indices of refraction).
+    iors: IorStack,
 }
 
 impl<'a> Tracer<'a> {
@@ -317,9 +323,7 @@ impl<'a> Tracer<'a> {
                 let r = radius * ((i as f64 + 0.5) / n as f64).sqrt();
                 let phi = i as f64 * GOLDEN;
                 let (u, v) = dir.any_orthonormal_pair();
-                let at = centre
-                    + u * (r * phi.cos() + ja * step)
-                    + v * (r * phi.sin() + jb * step);
+                let at = centre + u * (r * phi.cos() + ja * step) + v * (r * phi.sin() + jb * step);
                 // Back to the plane through the light, facing along `dir`.
                 let origin = at + dir * (plane - at).dot(dir);
                 (origin, dir, light.colour * area)
@@ -349,6 +353,7 @@ impl<'a> Tracer<'a> {
             travelled: 0.0,
             level: 0,
             inside: None,
+            iors: IorStack::default(),
         }];
         let mut splits = 0u64;
         while let Some(ph) = stack.pop() {
@@ -435,8 +440,10 @@ impl<'a> Tracer<'a> {
         };
         let ior = s.interior.map_or(1.0, |i| i.ior);
         let entering = d.dot(s.geo_normal) < 0.0;
-        let eta_view = if entering { ior } else { 1.0 / ior };
-        let mut onward = |dir: DVec3, share: DVec3, inside| {
+        let key = ior::key(&s);
+        let (n_near, n_far) = ph.iors.sides(key, ior, entering);
+        let eta_view = n_far / n_near;
+        let mut onward = |dir: DVec3, share: DVec3, inside, iors| {
             let weight = ph.weight * share.max_element();
             if weight < self.bailout || weight <= 0.0 {
                 return;
@@ -450,6 +457,7 @@ impl<'a> Tracer<'a> {
                 travelled: ph.travelled,
                 level: ph.level + 1,
                 inside,
+                iors,
             });
         };
         if reflects {
@@ -457,25 +465,28 @@ impl<'a> Tracer<'a> {
             if r.min != DVec3::ZERO || r.max != DVec3::ZERO {
                 let colour = pigment::evaluate_uv(&tex.pigment, tp, s.uv).rgb;
                 let cos_v = -n.dot(d);
-                let amount =
-                    reflection_amount(r, cos_v, eta_view) * metallic_tint(r.metallic, colour, cos_v);
-                onward(d - 2.0 * d.dot(n) * n, amount, ph.inside);
+                let amount = reflection_amount(r, cos_v, eta_view)
+                    * metallic_tint(r.metallic, colour, cos_v);
+                onward(d - 2.0 * d.dot(n) * n, amount, ph.inside, ph.iors);
             }
         }
         if refracts {
             let through = surface_filter(&s);
             if through.max_element() > 0.0 {
-                let (dir, kind) = bend(d, n, entering, ior);
+                let (dir, kind) = bend(d, n, n_near / n_far);
                 if kind == RayKind::Reflected {
                     // Total internal reflection: all of it, still inside.
-                    onward(dir, DVec3::ONE, ph.inside);
+                    onward(dir, DVec3::ONE, ph.inside, ph.iors);
                 } else {
+                    let mut iors = ph.iors;
                     let inside = if entering {
+                        iors.enter(key, ior);
                         s.interior.map(|i| (hit.prim, &**i))
                     } else {
+                        iors.leave(key);
                         None
                     };
-                    onward(dir, through, inside);
+                    onward(dir, through, inside, iors);
                 }
             }
         }

@@ -382,6 +382,7 @@ fn trace_wave(
                 radiosity: Some(state),
                 rad: Local::pretrace(&state.settings),
                 photons: state.photons,
+                iors: super::ior::IorStack::at_camera(world),
             };
             trace(world, &ray, 0.0, RayKind::Camera, 1, 1.0, &mut ctx);
             let fresh = std::mem::take(&mut ctx.rad.fresh);
