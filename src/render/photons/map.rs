@@ -3,6 +3,7 @@
 //! nearest photons.
 
 use glam::{DVec3, Vec3};
+use std::cell::Cell;
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
@@ -26,6 +27,9 @@ pub struct PhotonMap {
     photons: Vec<Photon>,
     /// Split axis of each node (index as `photons`).
     axis: Vec<u8>,
+    /// Each photon's position (index as `photons`): what the search reads,
+    /// packed so more of it stays in cache.
+    pos: Vec<Vec3>,
     /// Bounds of all photons (estimates far from them stop at once).
     min: Vec3,
     max: Vec3,
@@ -34,6 +38,12 @@ pub struct PhotonMap {
     /// Fewest photons an estimate wants (the radius doubles, twice at most,
     /// until it has them) and most it uses.
     gather: (usize, usize),
+}
+
+thread_local! {
+    /// The radius (0: r, 1: 2r, 2: 4r) the last estimate on this thread
+    /// used: where the next search starts (it changes the time, not the answer).
+    static LAST_LEVEL: Cell<u32> = const { Cell::new(0) };
 }
 
 /// A candidate in the search: distance² and index, largest first in the heap.
@@ -65,9 +75,11 @@ impl PhotonMap {
             max = max.max(ph.p);
         }
         build(&mut photons, &mut axis);
+        let pos = photons.iter().map(|ph| ph.p).collect();
         PhotonMap {
             photons,
             axis,
+            pos,
             min,
             max,
             radius,
@@ -98,37 +110,59 @@ impl PhotonMap {
             return DVec3::ZERO;
         }
         let q = p.as_vec3();
-        let mut radius = self.radius as f32;
+        let radius = self.radius as f32;
         // How far the photons' bounds are: beyond the largest radius, no light.
         let outside = (self.min - q).max(q - self.max).max(Vec3::ZERO).length();
         if outside >= 4.0 * radius {
             return DVec3::ZERO;
         }
+        // The adaptive rule: the first of the radii r, 2r, 4r within which
+        // `gather.0` photons lie (else 4r). A search at a larger radius finds
+        // every photon a smaller one keeps (its nearest `gather.1` include
+        // them), so the search may start at the radius the last estimate on
+        // this thread ended with: the same answer, found with one search
+        // where photons are sparse instead of three.
         let mut heap = BinaryHeap::with_capacity(self.gather.1 + 1);
-        for expand in 0..3 {
+        let mut level = LAST_LEVEL.with(Cell::get);
+        let (found, level) = loop {
             heap.clear();
-            if outside < radius {
-                self.nearest(0, self.photons.len(), q, radius * radius, &mut heap);
+            let r = radius * (1 << level) as f32;
+            if outside < r {
+                self.nearest(0, self.photons.len(), q, r * r, &mut heap);
             }
-            if heap.len() >= self.gather.0 || expand == 2 {
-                break;
+            let found = std::mem::take(&mut heap).into_sorted_vec();
+            let within = |l: u32| {
+                let r = radius * (1 << l) as f32;
+                found.partition_point(|c| c.0 < r * r)
+            };
+            let chosen = (0..=level).find(|&l| within(l) >= self.gather.0);
+            match chosen {
+                Some(l) => {
+                    let n = within(l);
+                    let mut found = found;
+                    found.truncate(n);
+                    break (found, l);
+                }
+                None if level == 2 => break (found, 2),
+                None => level += 1,
             }
-            radius *= 2.0;
-        }
-        if heap.is_empty() {
+        };
+        LAST_LEVEL.with(|c| c.set(level));
+        if found.is_empty() {
             return DVec3::ZERO;
         }
-        let r2 = if heap.len() == self.gather.1 {
-            f64::from(heap.peek().map_or(0.0, |c| c.0))
+        let r2 = if found.len() == self.gather.1 {
+            f64::from(found[found.len() - 1].0)
         } else {
-            f64::from(radius * radius)
+            let r = radius * (1 << level) as f32;
+            f64::from(r * r)
         };
         if r2 <= 0.0 {
             return DVec3::ZERO;
         }
         let n32 = n.as_vec3();
         let mut sum = DVec3::ZERO;
-        for c in heap.into_sorted_vec() {
+        for c in &found {
             let ph = &self.photons[c.1 as usize];
             // Only photons that arrived from the lit side.
             if ph.dir.dot(n32) < 0.0 {
@@ -141,13 +175,25 @@ impl PhotonMap {
     /// Adds to `heap` the photons of range `lo..hi` nearer `q` than `r2`
     /// (squared), keeping the nearest `gather.1`.
     fn nearest(&self, lo: usize, hi: usize, q: Vec3, mut r2: f32, heap: &mut BinaryHeap<Near>) {
-        if lo >= hi {
+        if hi - lo <= LEAF {
+            for (i, p) in self.pos[lo..hi].iter().enumerate() {
+                let d2 = (*p - q).length_squared();
+                if d2 < r2 {
+                    heap.push(Near(d2, (lo + i) as u32));
+                    if heap.len() > self.gather.1 {
+                        heap.pop();
+                    }
+                    if heap.len() == self.gather.1 {
+                        r2 = heap.peek().map_or(r2, |c| c.0);
+                    }
+                }
+            }
             return;
         }
         let mid = (lo + hi) / 2;
-        let ph = &self.photons[mid];
+        let p = self.pos[mid];
         let a = usize::from(self.axis[mid]);
-        let delta = q[a] - ph.p[a];
+        let delta = q[a] - p[a];
         let (first, second) = if delta < 0.0 {
             ((lo, mid), (mid + 1, hi))
         } else {
@@ -157,7 +203,7 @@ impl PhotonMap {
         if heap.len() == self.gather.1 {
             r2 = heap.peek().map_or(r2, |c| c.0);
         }
-        let d2 = (ph.p - q).length_squared();
+        let d2 = (p - q).length_squared();
         if d2 < r2 {
             heap.push(Near(d2, mid as u32));
             if heap.len() > self.gather.1 {
@@ -173,10 +219,13 @@ impl PhotonMap {
     }
 }
 
+/// Ranges of at most this many photons are leaves, searched one by one.
+const LEAF: usize = 16;
+
 /// Orders `photons` as a balanced kd-tree (each range's median is its node,
 /// split across the range's longest side), recording the split axes.
 fn build(photons: &mut [Photon], axis: &mut [u8]) {
-    if photons.len() <= 1 {
+    if photons.len() <= LEAF {
         return;
     }
     let (mut min, mut max) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
