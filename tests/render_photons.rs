@@ -178,3 +178,25 @@ fn a_photons_block_without_spacing_or_count_warns_and_shoots_nothing() {
     let px = render_source("photons", "empty", &lens_scene("", "photons { }"), 60, 60);
     assert!(middle(&px, 60, 60) < 0.05, "{}", middle(&px, 60, 60));
 }
+
+#[test]
+fn glass_that_reflects_and_passes_all_light_still_finishes() {
+    // Without conserve_energy a Fresnel glass reflects up to all the light
+    // and passes all of it too: every photon would split without end over
+    // 25 levels; the walk per photon is bounded, with conserve_energy the
+    // split light decays.
+    for conserve in ["", "conserve_energy"] {
+        let scene = format!(
+            "#version 3.7;
+global_settings {{ assumed_gamma 1.0 max_trace_level 25 photons {{ count 3000 }} }}
+camera {{ location <0, 3, -6> look_at <0, 1, 0> }}
+light_source {{ <-5, 8, -3> rgb 1 }}
+plane {{ y, 0 pigment {{ rgb 1 }} }}
+cylinder {{ <0, 0.01, 0>, <0, 2.5, 0>, 1 pigment {{ rgbt 1 }}
+  finish {{ diffuse 0.05 reflection {{ 0.1, 1.0 fresnel on }} {conserve} }}
+  interior {{ ior 1.5 }} photons {{ target refraction on reflection on }} }}"
+        );
+        let px = render_source("photons", "fresnel_glass", &scene, 30, 20);
+        assert!(px.iter().all(|p| p.iter().all(|c| c.is_finite())));
+    }
+}

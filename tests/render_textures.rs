@@ -586,3 +586,22 @@ fn nested_interiors_refract_by_the_ratio_of_their_indices() {
     assert_eq!(alone, same);
     assert_ne!(alone, other);
 }
+
+#[test]
+fn diffuse_back_lights_a_thin_sheet_from_behind() {
+    // POV-Ray 3.7's `diffuse D, BACK`: a light behind a disc shows through it
+    // by BACK times the cosine (measured: 61, 46, 31 of 255 here in both).
+    let scene = |diffuse: &str| {
+        format!(
+            "global_settings {{ assumed_gamma 1.0 }}
+camera {{ location <0, 0, -5> look_at 0 angle 20 }}
+light_source {{ <0, 0, 10> rgb 1 }}
+disc {{ 0, z, 2 pigment {{ rgb <0.8, 0.6, 0.4> }} finish {{ ambient 0 diffuse {diffuse} }} }}"
+        )
+    };
+    let (w, lit) = render("diffuse_back", &scene("0.5, 0.3"), 20, 20);
+    let centre = lit[(10 * w + 10) as usize];
+    assert!(close(centre, [0.24, 0.18, 0.12], 0.01), "{centre:?}");
+    let (_, dark) = render("diffuse_front", &scene("0.5"), 20, 20);
+    assert!(close(dark[(10 * w + 10) as usize], [0.0; 3], 1e-6));
+}

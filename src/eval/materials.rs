@@ -1289,11 +1289,23 @@ impl Evaluator<'_> {
             ) => {
                 c.once(kw, span)?;
                 if kw == "ambient" {
+                    // Negative ambient darkens, as in POV-Ray (advanced/balcony.pov).
                     let (v, s) = c.value("the ambient amount or colour")?;
                     f.ambient = match v {
-                        Value::Float(x) => DVec3::splat(nonneg(self, x, s, "ambient")?),
+                        Value::Float(x) => DVec3::splat(x),
                         other => self.to_colour(&other, s)?.rgb,
                     };
+                    return Ok(());
+                }
+                if kw == "diffuse" {
+                    // `diffuse D [, BACK]`: POV-Ray 3.7's light from behind.
+                    let (v, s) = c.value("a number after `diffuse`")?;
+                    f.diffuse = nonneg(self, self.to_float(&v, s)?, s, "diffuse")?;
+                    if matches!(c.peek(), Some(Tok::Comma(_))) {
+                        c.comma();
+                        let (v, s) = c.value("the diffuse amount for light from behind")?;
+                        f.diffuse_back = nonneg(self, self.to_float(&v, s)?, s, "diffuse")?;
+                    }
                     return Ok(());
                 }
                 let (v, s) = c.value(&format!("a number after `{kw}`"))?;

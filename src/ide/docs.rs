@@ -686,8 +686,8 @@ pub const DOCS: &[Doc] = &[
     ),
     kw(
         "diffuse",
-        "diffuse D",
-        "How much direct light is scattered (default 0.6).",
+        "diffuse D [, BACK]",
+        "How much direct light is scattered (default 0.6); BACK: how much light from behind the surface shows through (default 0).",
     ),
     kw(
         "brilliance",

@@ -338,6 +338,28 @@ fn shade_texture(
                     d,
                     n.dot(inc.dir),
                 );
+            } else if f.diffuse_back > 0.0 && !s.flags.double_illuminate {
+                // `diffuse D, BACK`: a light behind the surface shows through
+                // it by BACK (diffuse only, no highlights), the shadow ray
+                // leaving from the back.
+                if let Some(inc) = lights::incident(world, light, p, -geo_n, -n, ctx) {
+                    let back = Finish {
+                        diffuse: f.diffuse_back,
+                        phong: 0.0,
+                        specular: 0.0,
+                        ..*f
+                    };
+                    layer += direct(
+                        &back,
+                        colour,
+                        opacity,
+                        inc.colour,
+                        -n,
+                        inc.dir,
+                        d,
+                        -n.dot(inc.dir),
+                    );
+                }
             } else if s.flags.double_illuminate {
                 // `double_illuminate`: a light behind the surface (as seen from
                 // the viewer) lights it too, as if the normal were turned to it;

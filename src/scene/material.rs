@@ -544,6 +544,9 @@ pub struct Finish {
     pub ambient: DVec3,
     /// `diffuse`: Lambertian response (default 0.6).
     pub diffuse: f64,
+    /// `diffuse D, BACK`: response to lights behind the surface (thin
+    /// translucent things: paper, leaves; default 0).
+    pub diffuse_back: f64,
     /// `brilliance`: exponent on the diffuse cosine (default 1).
     pub brilliance: f64,
     /// `phong`: Phong highlight strength (default 0).
@@ -584,6 +587,7 @@ impl Default for Finish {
         Finish {
             ambient: DVec3::splat(0.1),
             diffuse: 0.6,
+            diffuse_back: 0.0,
             brilliance: 1.0,
             phong: 0.0,
             phong_size: 40.0,

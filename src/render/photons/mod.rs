@@ -35,6 +35,11 @@ use rayon::prelude::*;
 /// photon then carries more light, so the picture keeps its brightness).
 pub const MAX_SHOT: u64 = 20_000_000;
 
+/// Most segments one shot photon is followed along (its reflections and
+/// refractions together): glass that reflects and passes almost all light
+/// both (no `conserve_energy`) would otherwise split without end.
+const MAX_SEGMENTS: u64 = 1024;
+
 /// Photons shot at one target from one light.
 #[derive(Clone, Copy, Debug)]
 struct Beam {
@@ -163,6 +168,12 @@ pub fn shoot(world: &World, seed: u64) -> Shot {
             Pattern::Cone { n, .. } | Pattern::Parallel { n, .. } => n,
         };
         shot += n;
+        if std::env::var("RTS_PHDEBUG").is_ok() {
+            eprintln!(
+                "beam {k} light {} target {} r {} n {n} spacing {spacing} total {total}",
+                b.light, b.target, b.radius
+            );
+        }
         let tracer = Tracer {
             world,
             light,
@@ -358,6 +369,11 @@ impl<'a> Tracer<'a> {
         let mut splits = 0u64;
         while let Some(ph) = stack.pop() {
             splits += 1;
+            if splits > MAX_SEGMENTS {
+                // A pathological tree (surfaces that reflect and pass nearly
+                // all light both): the rest of it is dropped.
+                break;
+            }
             self.follow(ph, i, splits, out, &mut stack);
         }
     }
@@ -460,18 +476,24 @@ impl<'a> Tracer<'a> {
                 iors,
             });
         };
-        if reflects {
-            let r = &tex.finish.reflection;
-            if r.min != DVec3::ZERO || r.max != DVec3::ZERO {
-                let colour = pigment::evaluate_uv(&tex.pigment, tp, s.uv).rgb;
-                let cos_v = -n.dot(d);
-                let amount = reflection_amount(r, cos_v, eta_view)
-                    * metallic_tint(r.metallic, colour, cos_v);
+        // What reflection takes from the light passing through, with
+        // `conserve_energy` (as for camera rays).
+        let mut kept = DVec3::ONE;
+        let r = &tex.finish.reflection;
+        if r.min != DVec3::ZERO || r.max != DVec3::ZERO {
+            let colour = pigment::evaluate_uv(&tex.pigment, tp, s.uv).rgb;
+            let cos_v = -n.dot(d);
+            let amount =
+                reflection_amount(r, cos_v, eta_view) * metallic_tint(r.metallic, colour, cos_v);
+            if tex.finish.conserve_energy {
+                kept = (DVec3::ONE - amount).max(DVec3::ZERO);
+            }
+            if reflects {
                 onward(d - 2.0 * d.dot(n) * n, amount, ph.inside, ph.iors);
             }
         }
         if refracts {
-            let through = surface_filter(&s);
+            let through = surface_filter(&s) * kept;
             if through.max_element() > 0.0 {
                 let (dir, kind) = bend(d, n, n_near / n_far);
                 if kind == RayKind::Reflected {
