@@ -65,9 +65,15 @@ impl Evaluator<'_> {
     }
 
     /// The pattern of the block `kw` just met (see [`Self::block_pattern_token`]).
-    pub(crate) fn take_block_pattern(&mut self, kw: &str, c: &Cursor) -> R<PatternKind> {
+    pub(crate) fn take_block_pattern(&mut self, kw: &str, c: &mut Cursor) -> R<PatternKind> {
         match self.pending_pattern.take() {
             Some(p) => Ok(p),
+            // POV-Ray's older `slope DIRECTION [, LO, HI]` without braces
+            // (still read by 3.7: advanced/balcony's terrain.inc).
+            None if kw == "slope" && c.value_next() => match self.slope_spec(c, false)? {
+                Value::Pattern(p) => Ok((*p).clone()),
+                _ => unreachable!("slope_spec makes a pattern"),
+            },
             None => Err(Diagnostic::error(
                 codes::MISSING_VALUE,
                 c.last,
@@ -92,6 +98,12 @@ impl Evaluator<'_> {
 
     /// `slope { DIRECTION [, LO, HI] [altitude DIRECTION [, LO, HI]] }`.
     pub(crate) fn slope_block(&mut self, c: &mut Cursor) -> R<Value> {
+        self.slope_spec(c, true)
+    }
+
+    /// A slope's items; `whole_block`: the cursor holds the block's items
+    /// alone (else only the direction and range are read, the braceless form).
+    fn slope_spec(&mut self, c: &mut Cursor, whole_block: bool) -> R<Value> {
         let direction = self.take_vec3(c, "the slope's direction, e.g. `y`")?;
         let mut s = SlopeSpec {
             direction,
@@ -100,7 +112,7 @@ impl Evaluator<'_> {
             altitude_range: (0.0, 1.0),
         };
         s.slope_range = self.optional_range(c, "slope")?.unwrap_or((0.0, 1.0));
-        while let Some(tok) = c.next() {
+        while let Some(tok) = if whole_block { c.next() } else { None } {
             match tok {
                 Tok::Kw("altitude", span) => {
                     c.once("altitude", span)?;
