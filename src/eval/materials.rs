@@ -62,7 +62,7 @@ pub(crate) const FINISH_ITEMS: &[&str] = &[
     "crand",
     "irid",
 ];
-pub(crate) const REFLECTION_ITEMS: &[&str] = &["fresnel", "falloff", "metallic"];
+pub(crate) const REFLECTION_ITEMS: &[&str] = &["fresnel", "falloff", "metallic", "exponent"];
 /// What a `normal { }` accepts.
 pub(crate) fn normal_items() -> Vec<&'static str> {
     [
@@ -95,7 +95,7 @@ pub(crate) const IMAGE_MAP_ITEMS: &[&str] = &[
     "transmit",
     "uv_mapping",
 ];
-const LATER_FINISH: &[&str] = &["reflection_exponent", "fresnel"];
+const LATER_FINISH: &[&str] = &["fresnel"];
 
 /// A texture's pattern being read: its keyword, modifiers, textures and the
 /// transforms written in its block (applied to the whole texture at the end).
@@ -1354,12 +1354,21 @@ impl Evaluator<'_> {
                 f.reflection = Reflection {
                     min: col.rgb,
                     max: col.rgb,
+                    // A `reflection_exponent` written before still holds.
+                    exponent: f.reflection.exponent,
                     ..Reflection::default()
                 };
             }
             Tok::Block(_, Value::Reflection(r), span) => {
                 c.once("reflection", span)?;
-                f.reflection = r;
+                f.reflection = Reflection {
+                    exponent: r.exponent.or(f.reflection.exponent),
+                    ..r
+                };
+            }
+            Tok::Kw("reflection_exponent", span) => {
+                c.once("reflection_exponent", span)?;
+                f.reflection.exponent = Some(self.reflection_exponent(c)?);
             }
             Tok::Block(_, Value::Irid(i), span) => {
                 c.once("irid", span)?;
@@ -1380,7 +1389,23 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    /// `reflection { [MIN,] MAX [fresnel on] [falloff F] [metallic M] }`.
+    /// The reflection exponent after `exponent` or `reflection_exponent`.
+    fn reflection_exponent(&mut self, c: &mut Cursor) -> R<f64> {
+        let (v, s) = c.value("the reflection exponent")?;
+        let x = self.to_float(&v, s)?;
+        if x.is_nan() || x <= 0.0 {
+            return Err(Diagnostic::error(
+                codes::OUT_OF_RANGE,
+                s,
+                format!("the reflection exponent must be above 0, found {x}"),
+            )
+            .with_help("1 reflects linearly; lower values darken dim reflections")
+            .into());
+        }
+        Ok(x)
+    }
+
+    /// `reflection { [MIN,] MAX [fresnel on] [falloff F] [metallic M] [exponent E] }`.
     pub(crate) fn reflection(&mut self, c: &mut Cursor) -> R<Reflection> {
         let mut r = Reflection::default();
         let first = self.take_colour(c, "the reflection amount or colour")?;
@@ -1402,12 +1427,10 @@ impl Evaluator<'_> {
                     .take_float(c, "the falloff exponent")
                     .map(|x| r.falloff = x),
                 Tok::Kw("metallic", _) => self.take_optional_float(c, 1.0).map(|x| r.metallic = x),
-                Tok::Kw("exponent", span) => Err(Diagnostic::error(
-                    codes::UNSUPPORTED,
-                    span,
-                    "`exponent` is not implemented in rts yet",
-                )
-                .into()),
+                Tok::Kw("exponent", span) => c
+                    .once("exponent", span)
+                    .and_then(|()| self.reflection_exponent(c))
+                    .map(|x| r.exponent = Some(x)),
                 other => Err(self.unexpected(c, &other, REFLECTION_ITEMS)),
             };
             if let Err(f) = res {

@@ -1,7 +1,7 @@
 //! The one documentation table for the language's words: every reserved keyword, colour
 //! keyword, directive, built-in function and constant, with a one-line description.
 //! Hover shows it; a test checks it covers the grammar's keywords and the evaluator's
-//! built-ins, and that each word it marks as implemented is described in
+//! built-ins, and that each word is described in
 //! `docs/language.md`.
 
 /// What kind of word a [`Doc`] describes.
@@ -28,8 +28,6 @@ pub struct Doc {
     pub syntax: &'static str,
     /// What it means.
     pub summary: &'static str,
-    /// Whether rts implements it (POV-Ray keywords reserved for a later release: false).
-    pub implemented: bool,
 }
 
 const fn kw(name: &'static str, syntax: &'static str, summary: &'static str) -> Doc {
@@ -38,17 +36,6 @@ const fn kw(name: &'static str, syntax: &'static str, summary: &'static str) -> 
         kind: DocKind::Keyword,
         syntax,
         summary,
-        implemented: true,
-    }
-}
-
-const fn later(name: &'static str, syntax: &'static str, summary: &'static str) -> Doc {
-    Doc {
-        name,
-        kind: DocKind::Keyword,
-        syntax,
-        summary,
-        implemented: false,
     }
 }
 
@@ -58,7 +45,6 @@ const fn dir(name: &'static str, syntax: &'static str, summary: &'static str) ->
         kind: DocKind::Directive,
         syntax,
         summary,
-        implemented: true,
     }
 }
 
@@ -68,7 +54,6 @@ const fn func(name: &'static str, syntax: &'static str, summary: &'static str) -
         kind: DocKind::Function,
         syntax,
         summary,
-        implemented: true,
     }
 }
 
@@ -78,7 +63,6 @@ const fn constant(name: &'static str, syntax: &'static str, summary: &'static st
         kind: DocKind::Constant,
         syntax,
         summary,
-        implemented: true,
     }
 }
 
@@ -756,10 +740,10 @@ pub const DOCS: &[Doc] = &[
         "Iridescence in a finish: thin-film interference colours of amount A.",
     ),
     kw("thickness", "thickness T", "The film thickness of irid (default 0)."),
-    later(
+    kw(
         "reflection_exponent",
         "reflection_exponent E",
-        "Non-linear reflection (POV-Ray 3.5 form).",
+        "Non-linear reflection (POV-Ray 3.5 form of `reflection { … exponent E }`): the reflected colour is raised to 1/E.",
     ),
     // interior
     kw(
@@ -1858,11 +1842,7 @@ pub fn markdown(doc: &Doc) -> String {
         DocKind::Function => "built-in function",
         DocKind::Constant => "built-in constant",
     };
-    let mut s = format!("```rts\n{}\n```\n{} *({what})*", doc.syntax, doc.summary);
-    if !doc.implemented {
-        s.push_str("\n\nPOV-Ray keyword not implemented in rts yet.");
-    }
-    s
+    format!("```rts\n{}\n```\n{} *({what})*", doc.syntax, doc.summary)
 }
 
 #[cfg(test)]
@@ -1908,7 +1888,7 @@ mod tests {
             .collect();
         let missing: Vec<&str> = DOCS
             .iter()
-            .filter(|d| d.implemented && !words.contains(d.name))
+            .filter(|d| !words.contains(d.name))
             .map(|d| d.name)
             .collect();
         assert!(missing.is_empty(), "not in docs/language.md: {missing:?}");

@@ -523,6 +523,10 @@ pub struct Reflection {
     pub falloff: f64,
     /// `metallic`: tint the reflection by the surface colour.
     pub metallic: f64,
+    /// `exponent` (or the finish's `reflection_exponent`): the reflected
+    /// colour is raised to `1 / exponent` per channel before it is scaled by
+    /// the reflection amount (measured on POV-Ray 3.7); `None`: not given (1).
+    pub exponent: Option<f64>,
 }
 
 impl Default for Reflection {
@@ -533,6 +537,7 @@ impl Default for Reflection {
             fresnel: false,
             falloff: 1.0,
             metallic: 0.0,
+            exponent: None,
         }
     }
 }
