@@ -633,3 +633,44 @@ plane {{ y, 0 pigment {{ rgb 0 }} finish {{ ambient 0 diffuse 0 {form} }} }}"
         }
     }
 }
+
+#[test]
+fn uv_mapping_before_an_objects_texture_maps_it_by_uv() {
+    // POV-Ray's `object { … uv_mapping texture { … } }` (scenes/advanced/
+    // benchmark.pov) is `texture { uv_mapping pigment { … } }`.
+    let scene = |tex: &str| {
+        format!(
+            "global_settings {{ assumed_gamma 1.0 }}
+camera {{ location <1, 2, -3> look_at 0 angle 40 }}
+light_source {{ <2, 5, -4> rgb 1 }}
+sphere {{ 0, 1 {tex} }}"
+        )
+    };
+    let checker = "pigment { checker rgb 1, rgb 0 scale 0.1 }";
+    let (_, object_level) = render(
+        "uv_object",
+        &scene(&format!("uv_mapping texture {{ {checker} }}")),
+        32,
+        24,
+    );
+    let (_, pigment_level) = render(
+        "uv_pigment",
+        &scene(&format!("texture {{ uv_mapping {checker} }}")),
+        32,
+        24,
+    );
+    let (_, plain) = render(
+        "uv_none",
+        &scene(&format!("texture {{ {checker} }}")),
+        32,
+        24,
+    );
+    assert!(
+        object_level == pigment_level,
+        "uv_mapping before the texture differs"
+    );
+    assert!(
+        object_level != plain,
+        "uv_mapping before the texture had no effect"
+    );
+}

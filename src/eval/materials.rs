@@ -1445,7 +1445,7 @@ impl Evaluator<'_> {
 /// it holds so far belong to the uv lookup; any applied later (by a texture or
 /// object) leave it where it is, as in POV-Ray. An image lies flat on the uv
 /// square whatever its `map_type`.
-fn uv_mapped(mut pig: Pigment) -> Pigment {
+pub(crate) fn uv_mapped(mut pig: Pigment) -> Pigment {
     if let Pattern::Image(im) = &pig.pattern {
         let mut im = (**im).clone();
         im.map_type = 0;

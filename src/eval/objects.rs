@@ -30,6 +30,7 @@ pub(crate) const OBJECT_MODIFIERS: &[&str] = &[
     "no_radiosity",
     "radiosity",
     "photons",
+    "uv_mapping",
     "inverse",
     "hollow",
     "double_illuminate",
@@ -294,7 +295,23 @@ impl Evaluator<'_> {
     /// The modifiers after an object's parameters; errors are reported and skipped.
     fn modifiers(&mut self, obj: &mut Object, c: &mut Cursor, is_union: bool) {
         let mut media_at = None;
-        while let Some(tok) = c.next() {
+        // `uv_mapping` before a texture or pigment (POV-Ray's
+        // `uv_mapping texture { … }`): where it was written.
+        let mut uv_next: Option<Span> = None;
+        while let Some(mut tok) = c.next() {
+            if let Tok::Kw("uv_mapping", span) = tok {
+                uv_next = Some(span);
+                continue;
+            }
+            if let Some(at) = uv_next.take() {
+                tok = match self.uv_mapped_item(obj, tok, at) {
+                    Ok(t) => t,
+                    Err(f) => {
+                        self.report(f);
+                        continue;
+                    }
+                };
+            }
             match &tok {
                 Tok::Block(_, Value::Interior(i), s) if !i.media.is_empty() => media_at = Some(*s),
                 Tok::Block(_, Value::Material(m), s)
@@ -322,6 +339,41 @@ impl Evaluator<'_> {
                     .with_help("add `hollow` to the object, as POV-Ray requires for media"),
                 );
             }
+        }
+    }
+
+    /// The item after an object's `uv_mapping`, its pigment looked up by the
+    /// surface's uv coordinates: a texture (not a patterned one) or a pigment.
+    fn uv_mapped_item(&mut self, obj: &Object, tok: Tok, at: Span) -> R<Tok> {
+        let tok = match tok {
+            Tok::Deferred(b) => {
+                let base = self.material_base(obj, b.block.keyword.name);
+                self.undefer(&b, base)
+            }
+            t => t,
+        };
+        match tok {
+            Tok::Block(kw, Value::Texture(t), span) if t.patterned.is_none() => {
+                let mut tex = (*t).clone();
+                tex.pigment = super::materials::uv_mapped(std::mem::take(&mut tex.pigment));
+                Ok(Tok::Block(kw, Value::Texture(Arc::new(tex)), span))
+            }
+            Tok::Block(kw, Value::Pigment(p), span) => Ok(Tok::Block(
+                kw,
+                Value::Pigment(Arc::new(super::materials::uv_mapped((*p).clone()))),
+                span,
+            )),
+            other => Err(Diagnostic::error(
+                codes::UNEXPECTED_ITEM,
+                other.span(),
+                format!(
+                    "`uv_mapping` here applies to the texture or pigment after it, not to {}",
+                    other.describe()
+                ),
+            )
+            .with_secondary(at, "uv_mapping")
+            .with_help("write `uv_mapping texture { … }` or `uv_mapping pigment { … }` (a patterned texture: put uv_mapping in the pigments it chooses)")
+            .into()),
         }
     }
 
