@@ -172,21 +172,31 @@ impl PhotonMap {
         sum / (std::f64::consts::PI * r2)
     }
 
+    /// Keeps `cand` in `heap` when nearer than `r2`, at most `gather.1` kept;
+    /// once full, `r2` shrinks to the farthest kept.
+    #[inline(always)]
+    fn offer(&self, heap: &mut BinaryHeap<Near>, cand: Near, r2: &mut f32) {
+        if cand.0 < *r2 {
+            heap.push(cand);
+            if heap.len() > self.gather.1 {
+                heap.pop();
+            }
+            if heap.len() == self.gather.1 {
+                *r2 = heap.peek().map_or(*r2, |c| c.0);
+            }
+        }
+    }
+
     /// Adds to `heap` the photons of range `lo..hi` nearer `q` than `r2`
     /// (squared), keeping the nearest `gather.1`.
     fn nearest(&self, lo: usize, hi: usize, q: Vec3, mut r2: f32, heap: &mut BinaryHeap<Near>) {
         if hi - lo <= LEAF {
             for (i, p) in self.pos[lo..hi].iter().enumerate() {
-                let d2 = (*p - q).length_squared();
-                if d2 < r2 {
-                    heap.push(Near(d2, (lo + i) as u32));
-                    if heap.len() > self.gather.1 {
-                        heap.pop();
-                    }
-                    if heap.len() == self.gather.1 {
-                        r2 = heap.peek().map_or(r2, |c| c.0);
-                    }
-                }
+                self.offer(
+                    heap,
+                    Near((*p - q).length_squared(), (lo + i) as u32),
+                    &mut r2,
+                );
             }
             return;
         }
@@ -203,16 +213,7 @@ impl PhotonMap {
         if heap.len() == self.gather.1 {
             r2 = heap.peek().map_or(r2, |c| c.0);
         }
-        let d2 = (p - q).length_squared();
-        if d2 < r2 {
-            heap.push(Near(d2, mid as u32));
-            if heap.len() > self.gather.1 {
-                heap.pop();
-            }
-            if heap.len() == self.gather.1 {
-                r2 = heap.peek().map_or(r2, |c| c.0);
-            }
-        }
+        self.offer(heap, Near((p - q).length_squared(), mid as u32), &mut r2);
         if delta * delta < r2 {
             self.nearest(second.0, second.1, q, r2, heap);
         }
