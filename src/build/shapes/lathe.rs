@@ -244,6 +244,18 @@ impl Lathe {
         DVec3::new(n2.x * p.x / rho, n2.y, n2.x * p.z / rho)
     }
 
+    /// POV-Ray's uv coordinates at `p` on segment `sub`: u the angle around y
+    /// (as on a sphere), v the curve's parameter across all segments, each
+    /// segment an equal share of [0, 1] (measured against POV-Ray).
+    pub fn uv(&self, p: DVec3, sub: u32) -> DVec2 {
+        let u = super::revolve::around_y(p);
+        let Some(c) = self.curves.get(sub as usize) else {
+            return DVec2::new(u, 0.0);
+        };
+        let s = closest(c, DVec2::new(p.x.hypot(p.z), p.y));
+        DVec2::new(u, (f64::from(sub) + s) / self.curves.len() as f64)
+    }
+
     /// Bounds in object space; empty for no segments.
     pub fn bounds(&self) -> Aabb {
         if self.curves.is_empty() {

@@ -152,6 +152,12 @@ fn bracketed(p: &[f64], dp: &[f64], mut a: f64, mut b: f64, fa: f64) -> f64 {
     x
 }
 
+/// The angle of `p` around the y axis as a fraction of a turn in [0, 1),
+/// `atan2(z, x) / 2π` (the u of POV-Ray's uv mapping of spheres, lathes and sors).
+pub fn around_y(p: glam::DVec3) -> f64 {
+    (p.z.atan2(p.x) / std::f64::consts::TAU).rem_euclid(1.0)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -58,6 +58,14 @@ pub fn segment_cubic(p: [DVec2; 4]) -> [f64; 4] {
     ]
 }
 
+/// POV-Ray's uv coordinates on a cap of radius `r_cap` (measured): u the
+/// angle around y as on the sides, v the distance from the axis as a fraction
+/// of the radius, running outwards on the bottom and inwards on the top.
+fn cap_uv(p: DVec3, r_cap: f64, top: bool) -> DVec2 {
+    let f = (p.x.hypot(p.z) / r_cap.max(f64::MIN_POSITIVE)).min(1.0);
+    DVec2::new(super::revolve::around_y(p), if top { 1.0 - f } else { f })
+}
+
 impl Sor {
     /// A sor of POV-Ray's points `<r, h>` (at least 4, heights checked by the
     /// caller: increasing up to the last but one, the last differing from the
@@ -218,6 +226,25 @@ impl Sor {
                 let df = ((3.0 * s.f[3] * u + 2.0 * s.f[2]) * u + s.f[1]) / dy;
                 // Gradient of x² + z² − f(y).
                 DVec3::new(2.0 * p.x, -df, 2.0 * p.z)
+            }
+        }
+    }
+
+    /// POV-Ray's uv coordinates at `p` on surface `sub`: on the sides u is the
+    /// angle around y (as on a sphere) and v the height through the segments,
+    /// each an equal share of [0, 1]; caps are mapped as described on
+    /// [`cap_uv`] (measured against POV-Ray).
+    pub fn uv(&self, p: DVec3, sub: u32) -> DVec2 {
+        let u = super::revolve::around_y(p);
+        match sub {
+            BOTTOM | TOP => cap_uv(p, self.cap2[(sub == TOP) as usize].sqrt(), sub == TOP),
+            _ => {
+                let k = sub - FIRST_SIDE;
+                let Some(s) = self.segments.get(k as usize) else {
+                    return DVec2::new(u, 0.0);
+                };
+                let f = ((p.y - s.y0) / (s.y1 - s.y0)).clamp(0.0, 1.0);
+                DVec2::new(u, (f64::from(k) + f) / self.segments.len() as f64)
             }
         }
     }
