@@ -71,6 +71,9 @@ pub struct World {
     pub camera: Camera,
     /// Light sources.
     pub lights: Vec<Light>,
+    /// Per light, the built `projected_through` object (see
+    /// [`crate::scene::Light::projected_through`]); `None` for most lights.
+    pub light_masks: Vec<Option<Arc<World>>>,
     /// Colour of rays that hit nothing.
     pub background: DVec3,
     /// Global settings.
@@ -159,6 +162,7 @@ pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
     let mut world = World {
         camera: scene.camera.clone(),
         lights: scene.lights.clone(),
+        light_masks: light_masks(scene),
         background: scene.background.rgb,
         global: scene.global.clone(),
         atmosphere: scene.atmosphere.clone(),
@@ -186,6 +190,23 @@ pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
             .collect();
     }
     world
+}
+
+/// The `projected_through` objects of `scene`'s lights, each built on its own.
+fn light_masks(scene: &Scene) -> Vec<Option<Arc<World>>> {
+    scene
+        .lights
+        .iter()
+        .map(|l| {
+            l.projected_through.as_ref().map(|o| {
+                let only = Scene {
+                    objects: vec![(**o).clone()],
+                    ..Scene::default()
+                };
+                Arc::new(build(&only))
+            })
+        })
+        .collect()
 }
 
 /// What a child takes from its enclosing objects.

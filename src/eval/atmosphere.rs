@@ -238,8 +238,8 @@ impl Evaluator<'_> {
         })
     }
 
-    /// `looks_like { OBJECT }`: the object.
-    pub(crate) fn looks_like(&mut self, c: &mut Cursor) -> R<Object> {
+    /// `looks_like { OBJECT }` or `projected_through { OBJECT }` (`kw`): the object.
+    pub(crate) fn looks_like(&mut self, c: &mut Cursor, kw: &str) -> R<Object> {
         let obj = match c.next() {
             Some(Tok::Block(_, Value::Object(o), _) | Tok::Val(Value::Object(o), _)) => {
                 (*o).clone()
@@ -252,9 +252,11 @@ impl Evaluator<'_> {
                 return Err(Diagnostic::error(
                     codes::MISSING_VALUE,
                     c.span,
-                    "`looks_like` needs an object",
+                    format!("`{kw}` needs an object"),
                 )
-                .with_help("write `looks_like { sphere { 0, 0.2 pigment { rgb 1 } } }`")
+                .with_help(format!(
+                    "write `{kw} {{ sphere {{ 0, 0.2 pigment {{ rgb 1 }} }} }}`"
+                ))
                 .into())
             }
         };

@@ -44,6 +44,7 @@ pub(crate) const BLOCKS: &[&str] = &[
     "density_map",
     "material",
     "looks_like",
+    "projected_through",
     "spline",
     "keyframes",
     "animation",
@@ -169,7 +170,9 @@ impl Evaluator<'_> {
             "mesh_camera" => Value::MeshCamera(std::sync::Arc::new(self.mesh_camera(&mut c)?)),
             "light_source" => Value::Light(std::sync::Arc::new(self.light(&mut c)?)),
             "transform" => Value::Transform(std::sync::Arc::new(self.transform_block(&mut c)?)),
-            "looks_like" => Value::Object(std::sync::Arc::new(self.looks_like(&mut c)?)),
+            "looks_like" | "projected_through" => {
+                Value::Object(std::sync::Arc::new(self.looks_like(&mut c, kw)?))
+            }
             "spline" => self.spline_block(&mut c)?,
             "keyframes" => self.keyframes_block(&mut c)?,
             "camera_path" => unreachable!("read above"),

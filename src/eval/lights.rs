@@ -25,6 +25,7 @@ pub(crate) const LIGHT_ITEMS: &[&str] = &[
     "fade_distance",
     "fade_power",
     "looks_like",
+    "projected_through",
     "shadowless",
     "photons",
     "media_interaction",
@@ -35,7 +36,7 @@ pub(crate) const LIGHT_ITEMS: &[&str] = &[
     "matrix",
     "transform",
 ];
-const LATER_LIGHT: &[&str] = &["projected_through", "area_illumination"];
+const LATER_LIGHT: &[&str] = &["area_illumination"];
 
 /// A light's number parameter that must not be negative.
 fn out_of_range(span: Span, msg: String, help: &str) -> Fail {
@@ -200,6 +201,20 @@ impl Evaluator<'_> {
                         Ok(())
                     }
                 }
+                Tok::Block("projected_through", Value::Object(o), span) => {
+                    if light.projected_through.is_some() {
+                        Err(Diagnostic::error(
+                            codes::DUPLICATE_PARAMETER,
+                            span,
+                            "`projected_through` is given twice in this `light_source`",
+                        )
+                        .with_help("put both shapes in a `union` inside one `projected_through`")
+                        .into())
+                    } else {
+                        light.projected_through = Some(o);
+                        Ok(())
+                    }
+                }
                 Tok::Kw("shadowless", _) => {
                     light.shadowless = true;
                     Ok(())
@@ -319,6 +334,9 @@ impl Evaluator<'_> {
             super::objects::apply_transform(o, &transform);
             o.flags.no_shadow = true;
         }
+        if let Some(obj) = &mut light.projected_through {
+            super::objects::apply_transform(Arc::make_mut(obj), &transform);
+        }
         Ok(light)
     }
 
@@ -346,7 +364,10 @@ impl Evaluator<'_> {
                 self.report(f);
             }
         }
-        if let Some(obj) = &mut light.looks_like {
+        for obj in [&mut light.looks_like, &mut light.projected_through]
+            .into_iter()
+            .flatten()
+        {
             super::objects::apply_transform(Arc::make_mut(obj), &transform);
         }
         Ok(light)
@@ -427,7 +448,10 @@ pub(crate) fn take_lights(obj: &mut crate::scene::Object, outer: Option<&Transfo
     for mut l in std::mem::take(&mut obj.lights) {
         if let Some(t) = &t {
             transform_light(&mut l, t);
-            if let Some(o) = &mut l.looks_like {
+            for o in [&mut l.looks_like, &mut l.projected_through]
+                .into_iter()
+                .flatten()
+            {
                 let o = Arc::make_mut(o);
                 o.transform = Some(Arc::new(match &o.transform {
                     Some(own) => own.then(t),

@@ -133,7 +133,7 @@ pub fn block_keywords(block: &str) -> Option<Vec<&'static str>> {
         "sphere_sweep" => super::shapes_more::SWEEP_ITEMS.to_vec(),
         "clipped_by" | "bounded_by" => OBJECTS.to_vec(),
         "union" | "merge" | "intersection" | "difference" => OBJECTS.to_vec(),
-        "looks_like" => OBJECTS.to_vec(),
+        "looks_like" | "projected_through" => OBJECTS.to_vec(),
         k if OBJECTS.contains(&k) => Vec::new(),
         k if is_evaluated_block(k) => return None,
         _ => return None,

@@ -932,6 +932,11 @@ pub const DOCS: &[Doc] = &[
         "An object drawn at the light's place (casting no shadow).",
     ),
     kw(
+        "projected_through",
+        "projected_through { OBJECT }",
+        "Only light that passes through the object shines; the object itself is not drawn.",
+    ),
+    kw(
         "media_interaction",
         "media_interaction on|off",
         "Whether the light lights scattering media (default on).",

@@ -84,6 +84,11 @@ pub fn incident(
     if colour == DVec3::ZERO || colour.is_nan() {
         return None;
     }
+    // A shadowless light's `projected_through` still masks it (shadowed lights
+    // test it per shadow ray, so area lights get soft edges).
+    if light.shadowless && beyond_mask(world, index, p, dir, dist) == Some(None) {
+        return None;
+    }
     if !light.shadowless {
         let seen = match (&light.area, along_axis) {
             (Some(area), false) => {
@@ -121,6 +126,12 @@ pub fn shadow(
     light: usize,
     ctx: &mut TraceCtx,
 ) -> DVec3 {
+    // Through a `projected_through` object only: shadows from beyond it.
+    let dist = match beyond_mask(world, light, p, dir, dist) {
+        None => dist,
+        Some(None) => return DVec3::ZERO,
+        Some(Some(rest)) => rest,
+    };
     let (ray, eps) = Ray::secondary(p, geo_n, dir);
     // Measured from the ray's own origin (moved off the surface): from a floor
     // lit by a light set exactly in the ceiling's plane, the distance from `p`
@@ -145,6 +156,47 @@ pub fn shadow(
         cell.set(hint);
         seen
     })
+}
+
+/// For a light with a `projected_through` object (else `None`): `Some(None)` when
+/// the way from the light (at `p + dir · dist`) to `p` misses the object, else
+/// `Some(Some(d))` with `d` the distance from `p` back to where that way last
+/// leaves the object (0 when `p` lies inside it): only objects within `d` of `p`
+/// can shadow it, as POV-Ray's manual says ("any objects between the light and
+/// the projected through object will not cast shadows").
+fn beyond_mask(
+    world: &World,
+    light: usize,
+    p: DVec3,
+    dir: DVec3,
+    dist: f64,
+) -> Option<Option<f64>> {
+    let mask = world.light_masks.get(light)?.as_ref()?;
+    /// Crossings looked at on one way (a limit, not a hang, for odd shapes).
+    const MAX_CROSSINGS: usize = 64;
+    let from = p + dir * dist;
+    let ray = Ray::new(from, -dir);
+    let mut last = None;
+    let mut t0 = 0.0;
+    // Stopping a little short of `p`: a point on the object's own surface is
+    // not reached through that surface (POV-Ray leaves the object's lit side
+    // dark), the same way on every pixel.
+    let reach = dist - 2.0 * crate::build::surface_offset(p);
+    for _ in 0..MAX_CROSSINGS {
+        let Some(hit) = mask.intersect(&ray, t0, reach, crate::build::RayKind::Probe) else {
+            break;
+        };
+        last = Some(hit.t);
+        t0 = hit.t + crate::build::surface_offset(ray.at(hit.t));
+    }
+    let Some(t) = last else {
+        return Some(None);
+    };
+    Some(Some(if mask.inside(p) {
+        0.0
+    } else {
+        (dist - t).max(0.0)
+    }))
 }
 
 /// POV-Ray's distance fading: `2 / (1 + (d / fade_distance)^fade_power)`, or 1 when

@@ -34,6 +34,11 @@ pub struct Light {
     /// `looks_like { OBJECT }`: the object, already placed at the light; the evaluator
     /// adds it to the scene with `no_shadow`.
     pub looks_like: Option<Arc<Object>>,
+    /// `projected_through { OBJECT }`: only light whose way to a point crosses this
+    /// object shines there, and only what lies beyond the object shadows it. The
+    /// object is a mask, not part of the scene; it moves with the light's own
+    /// transforms.
+    pub projected_through: Option<Arc<Object>>,
     /// Where the light was written.
     pub span: Span,
     /// The `light_group` (bit index of [`super::ObjectFlags::light_groups`])
@@ -59,6 +64,7 @@ impl Default for Light {
             media_attenuation: false,
             area: None,
             looks_like: None,
+            projected_through: None,
             span: Span::default(),
             group: None,
             photons: super::LightPhotons::default(),

@@ -248,6 +248,7 @@ pub const KEYWORDS: &[&str] = &[
     "pretrace_end",
     "pretrace_start",
     "prism",
+    "projected_through",
     "quadratic_spline",
     "quadric",
     "quartic",
