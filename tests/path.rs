@@ -301,6 +301,40 @@ fn a_point_light_lights_a_lambertian_surface_as_the_classic_renderer_does() {
 }
 
 #[test]
+fn projected_through_masks_both_renderers_alike() {
+    // A ring as the mask: a lit ring on the floor, dark inside and outside it;
+    // a ball between the light and the ring casts no shadow.
+    let text = "
+        global_settings { assumed_gamma 1 }
+        camera { orthographic location <0, 5, 0> look_at 0 right x*4 up z*4 }
+        plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+        sphere { <0.75, 4, 0>, 0.2 pigment { rgb 1 } no_image }
+        light_source { <0, 1000, 0> rgb 1 parallel point_at 0
+          projected_through { difference { cylinder { <0, 2.9, 0>, <0, 3.1, 0>, 1 }
+                                           cylinder { <0, 2, 0>, <0, 4, 0>, 0.5 } } } }";
+    let w = world(text);
+    let o = opts(16, 16);
+    let classic = rts::render::render(&w, &o);
+    let po = PathOptions {
+        filter: PixelFilter::Box,
+        max_depth: 2,
+        ..PathOptions::default()
+    };
+    let pt = path::render(&w, &o, &Settings::default(), &po, 16).film;
+    for film in [&classic, &pt] {
+        // Pixels a quarter unit wide: whole pixels inside the hole, on the
+        // ring (the ball's would-be shadow falls on one of the first two) and
+        // outside it.
+        let at = |x: usize, y: usize| film.pixels[y * 16 + x].x;
+        assert!(at(7, 7) < 1e-6, "inside the ring's hole: {}", at(7, 7));
+        for (x, y) in [(10, 8), (5, 8), (8, 5)] {
+            assert!(at(x, y) > 0.5, "under the ring at ({x}, {y}): {}", at(x, y));
+        }
+        assert!(at(0, 0) < 1e-6, "outside the ring: {}", at(0, 0));
+    }
+}
+
+#[test]
 fn scene_settings_select_the_path_tracer_and_are_checked() {
     let s = scene("global_settings { path_tracing { samples 5 max_depth 3 firefly_clamp 10 pixel_filter \"box\" } }");
     let p = s.global.path_tracing.expect("set");

@@ -164,7 +164,7 @@ pub fn shadow(
 /// leaves the object (0 when `p` lies inside it): only objects within `d` of `p`
 /// can shadow it, as POV-Ray's manual says ("any objects between the light and
 /// the projected through object will not cast shadows").
-fn beyond_mask(
+pub(crate) fn beyond_mask(
     world: &World,
     light: usize,
     p: DVec3,
@@ -174,6 +174,18 @@ fn beyond_mask(
     let mask = world.light_masks.get(light)?.as_ref()?;
     /// Crossings looked at on one way (a limit, not a hang, for odd shapes).
     const MAX_CROSSINGS: usize = 64;
+    // A parallel light's samples may lie at infinity: start past the mask instead.
+    let dist = if dist.is_finite() {
+        dist
+    } else {
+        let b = mask.bounds;
+        let far = (b.min - p).abs().max((b.max - p).abs()).length();
+        if far.is_finite() {
+            far + 1.0
+        } else {
+            1e9
+        }
+    };
     let from = p + dir * dist;
     let ray = Ray::new(from, -dir);
     let mut last = None;

@@ -209,14 +209,20 @@ pub fn radiance(
         // Next-event estimation.
         if bsdf.has_smooth_lobes() {
             let flags = &world.primitives[hit.prim as usize].flags;
-            for light in &world.lights {
+            for (index, light) in world.lights.iter().enumerate() {
                 let u = sampler.next_2d();
                 if !light.reaches(flags) {
                     continue;
                 }
-                let Some(ls) = lights::sample(light, p, u) else {
+                let Some(mut ls) = lights::sample(light, p, u) else {
                     continue;
                 };
+                // `projected_through`: masked as in the classic renderer.
+                match crate::render::lights::beyond_mask(world, index, p, ls.wi, ls.dist) {
+                    Some(None) => continue,
+                    Some(Some(rest)) if !light.shadowless => ls.dist = rest,
+                    _ => {}
+                }
                 let (f, _) = bsdf.eval(wo, ls.wi);
                 if f.max_element() <= 0.0 {
                     continue;
