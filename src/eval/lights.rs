@@ -290,15 +290,22 @@ impl Evaluator<'_> {
             Some(("spotlight", _)) => {
                 let b = beam_from(&beam, Beam::SPOT);
                 // Half-angles past 90° widen the cone beyond a hemisphere; POV-Ray
-                // 3.7 takes them (its sample lights/laser.pov has falloff 100) and
-                // so does the falloff rule in cos θ.
+                // 3.7 takes them (its sample lights/laser.pov has falloff 100, and
+                // 250) and so does the falloff rule in cos θ, which lights no more
+                // than the half space in front of the spotlight whatever the angle.
                 if b.radius >= 180.0 || b.falloff >= 180.0 {
                     let s = beam[0].or(beam[1]).map_or(c.span, |x| x.1);
-                    self.report(out_of_range(
-                        s,
-                        "a spotlight's radius and falloff must be below 180 degrees".into(),
-                        "they are half-angles of the cone: 30 and 45 are the defaults",
-                    ));
+                    self.report(
+                        Diagnostic::warning(
+                            codes::IGNORED,
+                            s,
+                            "a spotlight's radius and falloff are half-angles below 180 degrees",
+                        )
+                        .with_help(
+                            "past 90 degrees a spotlight already lights the whole half space in front of it; 30 and 45 are the defaults",
+                        )
+                        .into(),
+                    );
                 }
                 light.kind = LightKind::Spot(b);
             }
