@@ -533,3 +533,44 @@ fn links_are_followed_in_include_folders_only() {
     assert_eq!(code, 1);
     assert!(out.contains("rts::io::file_not_allowed"), "{out}");
 }
+
+#[test]
+fn image_maps_decode_pixels_as_povray_3_7_does() {
+    // A flat (128, 64, 200) picture seen head on with ambient 1: the file values
+    // (written with gamma 1) show how the picture was decoded. Expected values
+    // are POV-Ray 3.7's on the same scenes.
+    let dir = std::env::temp_dir().join(format!("rts-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    image::RgbImage::from_pixel(4, 4, image::Rgb([128, 64, 200]))
+        .save(dir.join("flat.png"))
+        .unwrap();
+    for (head, gamma, want) in [
+        (
+            "#version 3.7; global_settings { assumed_gamma 1.0 }",
+            "",
+            [55, 13, 147],
+        ),
+        (
+            "#version 3.7; global_settings { assumed_gamma 1.0 }",
+            "gamma 1.5",
+            [91, 32, 177],
+        ),
+        ("global_settings { assumed_gamma 1.0 }", "", [128, 64, 200]),
+    ] {
+        let scene = write(
+            "flat_image.pov",
+            &format!(
+                "{head}
+                camera {{ orthographic location <0.5, 0.5, -1> look_at <0.5, 0.5, 0> right x up y }}
+                plane {{ z, 0 pigment {{ image_map {{ png \"flat.png\" {gamma} }} }} finish {{ ambient 1 diffuse 0 }} }}"
+            ),
+        );
+        let out = dir.join("flat_out.png").display().to_string();
+        let (code, _, err) = rts(&[
+            "render", &scene, "-o", &out, "-W", "4", "-H", "4", "--gamma", "1.0", "-q",
+        ]);
+        assert_eq!(code, 0, "{err}");
+        let got = image::open(&out).unwrap().to_rgb8().get_pixel(1, 1).0;
+        assert_eq!(got, want, "{head} {gamma}");
+    }
+}

@@ -88,6 +88,7 @@ pub(crate) const IMAGE_MAP_ITEMS: &[&str] = &[
     "png",
     "jpeg",
     "exr",
+    "gamma",
     "map_type",
     "interpolate",
     "once",
@@ -1144,8 +1145,25 @@ impl Evaluator<'_> {
         };
         let mut filter_all: Option<f64> = None;
         let mut transmit_all: Option<f64> = None;
+        let mut file_gamma: Option<f64> = None;
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
+                Tok::Kw("gamma", _) => {
+                    let (v, s) = c.value("the image file's gamma")?;
+                    let g = self.to_float(&v, s)?;
+                    if g > 0.0 && g.is_finite() {
+                        file_gamma = Some(g);
+                        Ok(())
+                    } else {
+                        Err(Diagnostic::error(
+                            codes::OUT_OF_RANGE,
+                            s,
+                            format!("an image's gamma must be above 0, found {g}"),
+                        )
+                        .with_help("2.2 is the usual gamma of 8-bit pictures; 1 reads the values as they are")
+                        .into())
+                    }
+                }
                 Tok::Kw("png" | "jpeg" | "exr", _) => {
                     c.value("the image's file name").and_then(|(v, s)| match v {
                         Value::Str(name) => {
@@ -1215,15 +1233,30 @@ impl Evaluator<'_> {
                 .with_help("image_map reads PNG, JPEG and OpenEXR files"),
             )
         })?;
+        // How stored values become linear ones, as POV-Ray 3.7 does (measured): a
+        // `gamma G` after the file name decodes by that power; else scenes of
+        // `#version 3.7` read 8- and 16-bit PNG and JPEG pictures as sRGB, and
+        // older scenes (or floating-point pictures) use the values as stored.
+        let float_image = matches!(
+            img.color(),
+            image::ColorType::Rgb32F | image::ColorType::Rgba32F
+        );
+        let srgb =
+            file_gamma.is_none() && !float_image && self.language_version.is_some_and(|v| v >= 3.7);
         let rgba = img.to_rgba32f();
         im.width = rgba.width().max(1);
         im.height = rgba.height().max(1);
         im.pixels = rgba
             .pixels()
             .map(|p| {
-                // POV-Ray 3.7 uses the stored values as they are (measured: a
-                // PNG without gamma information is not decoded from sRGB).
-                let lin = f64::from;
+                let lin = |v: f32| {
+                    let v = f64::from(v);
+                    match file_gamma {
+                        Some(g) => v.max(0.0).powf(g),
+                        None if srgb => srgb_decode(v),
+                        None => v,
+                    }
+                };
                 Colour {
                     rgb: glam::DVec3::new(lin(p[0]), lin(p[1]), lin(p[2])),
                     filter: filter_all.unwrap_or(0.0),
@@ -1454,5 +1487,14 @@ pub(crate) fn uv_mapped(mut pig: Pigment) -> Pigment {
     Pigment {
         pattern: Pattern::Uv(Arc::new(pig)),
         transform: None,
+    }
+}
+
+/// The sRGB transfer function's inverse: a stored value in [0, 1] to linear.
+fn srgb_decode(v: f64) -> f64 {
+    if v <= 0.04045 {
+        v / 12.92
+    } else {
+        ((v + 0.055) / 1.055).powf(2.4)
     }
 }

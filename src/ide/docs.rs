@@ -553,6 +553,11 @@ pub const DOCS: &[Doc] = &[
         "Image interpolation: 2 bilinear, 4 normalized distance.",
     ),
     kw(
+        "gamma",
+        "gamma G",
+        "After an image_map's file name: decode its pixels as value^G (3.7 scenes decode PNG and JPEG from sRGB otherwise).",
+    ),
+    kw(
         "once",
         "once",
         "Shows an image map once instead of tiling it.",

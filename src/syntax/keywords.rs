@@ -121,6 +121,7 @@ pub const KEYWORDS: &[&str] = &[
     "frequency",
     "fresnel",
     "function",
+    "gamma",
     "gather",
     "global_lights",
     "global_settings",
