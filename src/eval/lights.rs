@@ -38,6 +38,17 @@ pub(crate) const LIGHT_ITEMS: &[&str] = &[
 ];
 const LATER_LIGHT: &[&str] = &["area_illumination"];
 
+/// A light's object block (`looks_like`, `projected_through`) written twice.
+fn given_twice(kw: &str, span: Span) -> Fail {
+    Diagnostic::error(
+        codes::DUPLICATE_PARAMETER,
+        span,
+        format!("`{kw}` is given twice in this `light_source`"),
+    )
+    .with_help(format!("put both shapes in a `union` inside one `{kw}`"))
+    .into()
+}
+
 /// A light's number parameter that must not be negative.
 fn out_of_range(span: Span, msg: String, help: &str) -> Fail {
     Diagnostic::error(codes::OUT_OF_RANGE, span, msg)
@@ -186,13 +197,7 @@ impl Evaluator<'_> {
                 }
                 Tok::Block("looks_like", Value::Object(o), span) => {
                     if light.looks_like.is_some() {
-                        Err(Diagnostic::error(
-                            codes::DUPLICATE_PARAMETER,
-                            span,
-                            "`looks_like` is given twice in this `light_source`",
-                        )
-                        .with_help("put both shapes in a `union` inside one `looks_like`")
-                        .into())
+                        Err(given_twice("looks_like", span))
                     } else {
                         let mut obj = (*o).clone();
                         let t = Transform::translate(location);
@@ -203,13 +208,7 @@ impl Evaluator<'_> {
                 }
                 Tok::Block("projected_through", Value::Object(o), span) => {
                     if light.projected_through.is_some() {
-                        Err(Diagnostic::error(
-                            codes::DUPLICATE_PARAMETER,
-                            span,
-                            "`projected_through` is given twice in this `light_source`",
-                        )
-                        .with_help("put both shapes in a `union` inside one `projected_through`")
-                        .into())
+                        Err(given_twice("projected_through", span))
                     } else {
                         light.projected_through = Some(o);
                         Ok(())
