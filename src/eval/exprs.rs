@@ -690,6 +690,29 @@ impl Evaluator<'_> {
         .into()
     }
 
+    /// The next value, which must be a finite number above 0: `expected` names it
+    /// when it is missing, `what` in the message ("WHAT must be above 0, found X").
+    pub(crate) fn take_above_zero(
+        &mut self,
+        c: &mut super::cursor::Cursor,
+        expected: &str,
+        what: &str,
+        help: &str,
+    ) -> R<f64> {
+        let (v, s) = c.value(expected)?;
+        let x = self.to_float(&v, s)?;
+        if x.is_finite() && x > 0.0 {
+            return Ok(x);
+        }
+        Err(Diagnostic::error(
+            codes::OUT_OF_RANGE,
+            s,
+            format!("{what} must be above 0, found {x}"),
+        )
+        .with_help(help.to_string())
+        .into())
+    }
+
     /// A float.
     pub(crate) fn to_float(&self, v: &Value, span: Span) -> R<f64> {
         match v {
@@ -733,7 +756,7 @@ impl Evaluator<'_> {
 }
 
 /// sRGB-encoded component to linear.
-fn srgb_to_linear(c: f64) -> f64 {
+pub(crate) fn srgb_to_linear(c: f64) -> f64 {
     if c <= 0.04045 {
         c / 12.92
     } else {
@@ -745,6 +768,7 @@ fn srgb_to_linear(c: f64) -> f64 {
 /// implement yet and does not reserve: met where a name is expected, they are
 /// reported as unsupported rather than as unknown identifiers.
 const POV_KEYWORDS_NOT_YET: &[&str] = &[
+    "area_illumination",
     "facets",
     "omnimax",
     "pavement",

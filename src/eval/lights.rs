@@ -36,7 +36,6 @@ pub(crate) const LIGHT_ITEMS: &[&str] = &[
     "matrix",
     "transform",
 ];
-const LATER_LIGHT: &[&str] = &["area_illumination"];
 
 /// A light's object block (`looks_like`, `projected_through`) written twice.
 fn given_twice(kw: &str, span: Span) -> Fail {
@@ -249,15 +248,6 @@ impl Evaluator<'_> {
                         area_light: b.area_light,
                     };
                     Ok(())
-                }
-                Tok::Kw(kw, span) | Tok::Block(kw, _, span) if LATER_LIGHT.contains(&kw) => {
-                    Err(Diagnostic::error(
-                        codes::UNSUPPORTED,
-                        span,
-                        format!("`{kw}` is not implemented in rts yet"),
-                    )
-                    .with_help("remove it; lights, shadows and area lights work without it")
-                    .into())
                 }
                 other => Err(self.unexpected(c, &other, LIGHT_ITEMS)),
             };

@@ -1148,22 +1148,14 @@ impl Evaluator<'_> {
         let mut file_gamma: Option<f64> = None;
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
-                Tok::Kw("gamma", _) => {
-                    let (v, s) = c.value("the image file's gamma")?;
-                    let g = self.to_float(&v, s)?;
-                    if g > 0.0 && g.is_finite() {
-                        file_gamma = Some(g);
-                        Ok(())
-                    } else {
-                        Err(Diagnostic::error(
-                            codes::OUT_OF_RANGE,
-                            s,
-                            format!("an image's gamma must be above 0, found {g}"),
-                        )
-                        .with_help("2.2 is the usual gamma of 8-bit pictures; 1 reads the values as they are")
-                        .into())
-                    }
-                }
+                Tok::Kw("gamma", _) => self
+                    .take_above_zero(
+                        c,
+                        "the image file's gamma",
+                        "an image's gamma",
+                        "2.2 is the usual gamma of 8-bit pictures; 1 reads the values as they are",
+                    )
+                    .map(|g| file_gamma = Some(g)),
                 Tok::Kw("png" | "jpeg" | "exr", _) => {
                     c.value("the image's file name").and_then(|(v, s)| match v {
                         Value::Str(name) => {
@@ -1253,7 +1245,7 @@ impl Evaluator<'_> {
                     let v = f64::from(v);
                     match file_gamma {
                         Some(g) => v.max(0.0).powf(g),
-                        None if srgb => srgb_decode(v),
+                        None if srgb => super::exprs::srgb_to_linear(v),
                         None => v,
                     }
                 };
@@ -1424,18 +1416,12 @@ impl Evaluator<'_> {
 
     /// The reflection exponent after `exponent` or `reflection_exponent`.
     fn reflection_exponent(&mut self, c: &mut Cursor) -> R<f64> {
-        let (v, s) = c.value("the reflection exponent")?;
-        let x = self.to_float(&v, s)?;
-        if x.is_nan() || x <= 0.0 {
-            return Err(Diagnostic::error(
-                codes::OUT_OF_RANGE,
-                s,
-                format!("the reflection exponent must be above 0, found {x}"),
-            )
-            .with_help("1 reflects linearly; lower values darken dim reflections")
-            .into());
-        }
-        Ok(x)
+        self.take_above_zero(
+            c,
+            "the reflection exponent",
+            "the reflection exponent",
+            "1 reflects linearly; lower values darken dim reflections",
+        )
     }
 
     /// `reflection { [MIN,] MAX [fresnel on] [falloff F] [metallic M] [exponent E] }`.
@@ -1487,14 +1473,5 @@ pub(crate) fn uv_mapped(mut pig: Pigment) -> Pigment {
     Pigment {
         pattern: Pattern::Uv(Arc::new(pig)),
         transform: None,
-    }
-}
-
-/// The sRGB transfer function's inverse: a stored value in [0, 1] to linear.
-fn srgb_decode(v: f64) -> f64 {
-    if v <= 0.04045 {
-        v / 12.92
-    } else {
-        ((v + 0.055) / 1.055).powf(2.4)
     }
 }

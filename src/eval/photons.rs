@@ -223,18 +223,12 @@ impl Evaluator<'_> {
                 Tok::Kw("target", span) => c.once("target", span).and_then(|()| {
                     b.items.push(("target", span));
                     let m = if c.value_next() {
-                        let (v, s) = c.value("the spacing multiplier")?;
-                        let x = self.to_float(&v, s)?;
-                        if x.is_nan() || x <= 0.0 {
-                            return Err(Diagnostic::error(
-                                codes::OUT_OF_RANGE,
-                                s,
-                                format!("photons `target` spacing multiplier must be above 0, found {x}"),
-                            )
-                            .with_help("1 shoots at the global spacing; 0.5 twice as densely")
-                            .into());
-                        }
-                        x
+                        self.take_above_zero(
+                            c,
+                            "the spacing multiplier",
+                            "photons `target` spacing multiplier",
+                            "1 shoots at the global spacing; 0.5 twice as densely",
+                        )?
                     } else {
                         1.0
                     };

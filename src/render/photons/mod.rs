@@ -168,12 +168,6 @@ pub fn shoot(world: &World, seed: u64) -> Shot {
             Pattern::Cone { n, .. } | Pattern::Parallel { n, .. } => n,
         };
         shot += n;
-        if std::env::var("RTS_PHDEBUG").is_ok() {
-            eprintln!(
-                "beam {k} light {} target {} r {} n {n} spacing {spacing} total {total}",
-                b.light, b.target, b.radius
-            );
-        }
         let tracer = Tracer {
             world,
             light,
