@@ -1116,8 +1116,11 @@ impl Evaluator<'_> {
                     i.media.push((*m).clone());
                     Ok(())
                 }
-                Tok::Kw("caustics" | "dispersion" | "dispersion_samples", _) => {
-                    // Accepted as in POV-Ray; they need photons or spectral rays.
+                Tok::Kw("caustics", _) => self
+                    .take_float(c, "the caustics power")
+                    .map(|x| i.caustics = x.max(0.0)),
+                Tok::Kw("dispersion" | "dispersion_samples", _) => {
+                    // Accepted as in POV-Ray; they need spectral rays.
                     self.take_float(c, "a number").map(|_| ())
                 }
                 other => Err(self.unexpected(c, &other, INTERIOR_ITEMS)),

@@ -621,6 +621,9 @@ pub fn shadow_filter(
         }
         let s = world.surface(ray, &hit);
         through *= surface_filter(&s);
+        if let Some(c) = s.interior.map(|i| i.caustics).filter(|&c| c > 0.0) {
+            through *= caustic_gain(&s, ray.dir, c);
+        }
         if let Some(i) = s
             .interior
             .filter(|i| i.fade_distance > 0.0 && i.fade_power > 0.0)
@@ -641,6 +644,33 @@ pub fn shadow_filter(
         through *= shadow_fade(&mut fading, t_min, t_max);
     }
     through
+}
+
+/// POV-Ray's simulated caustics (`interior { caustics C }`): light crossing
+/// surface `s` along `dir` is brightened by `1 + |cos θ|^(45 C)`, θ the angle
+/// between `dir` and the surface normal as the texture's `normal` perturbs it.
+/// Measured on POV-Ray 3.7 through a clear disc under a parallel light: the
+/// gain is 2 at normal incidence for any C, `cos(10°)^45` over 1 at 10° for
+/// C = 1 (1.502), the same for any pigment, once per surface crossed (a
+/// sphere's shadow centre is 4 times as bright), and bumps on the disc make
+/// the brightening vary with them.
+fn caustic_gain(s: &SurfaceHit, dir: DVec3, power: f64) -> f64 {
+    let d = dir.normalize();
+    let toward = if s.normal.dot(d) > 0.0 {
+        -s.normal
+    } else {
+        s.normal
+    };
+    let n = if s.texture.patterned.is_none() && s.blob.is_none() {
+        layers(s.texture)
+            .find_map(|t| t.normal.as_ref())
+            .map_or(toward, |nrm| {
+                pigment::perturb(nrm, toward, s.p, s.texture_from_world)
+            })
+    } else {
+        toward
+    };
+    1.0 + n.dot(d).abs().powf(45.0 * power)
 }
 
 /// A shadow ray's crossing of a surface whose interior fades light.

@@ -623,6 +623,10 @@ pub struct Interior {
     pub fade_colour: DVec3,
     /// `media { … }` blocks inside the object (their effects add up).
     pub media: Vec<super::Media>,
+    /// `caustics C`: POV-Ray's simulated caustics. Light a shadow ray carries
+    /// through the surface is multiplied by `1 + |cos θ|^(45 C)`, θ between
+    /// the ray and the (perturbed) surface normal (0 = off).
+    pub caustics: f64,
 }
 
 impl Default for Interior {
@@ -634,6 +638,7 @@ impl Default for Interior {
             fade_power: 0.0,
             fade_colour: DVec3::ZERO,
             media: Vec::new(),
+            caustics: 0.0,
         }
     }
 }
