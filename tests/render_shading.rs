@@ -315,3 +315,96 @@ fn transformed_sphere_equals_moved_sphere() {
         assert!((*p - *q).abs().max_element() < 1e-9, "{p:?} vs {q:?}");
     }
 }
+
+/// A closed glass cube as a `mesh` of twelve triangles, each wound so that
+/// `(b - a) × (c - a)` points out, or each reversed.
+fn glass_mesh_cube(reversed: bool) -> String {
+    let v = |i: usize| [(i >> 2) & 1, (i >> 1) & 1, i & 1].map(|b| if b == 1 { 1 } else { -1 });
+    // Faces as corner indices in outward order.
+    let faces = [
+        [0, 1, 3, 2],
+        [4, 6, 7, 5],
+        [0, 4, 5, 1],
+        [2, 3, 7, 6],
+        [0, 2, 6, 4],
+        [1, 5, 7, 3],
+    ];
+    let mut s = String::from("mesh {\n");
+    for [a, b, c, d] in faces {
+        for mut t in [[a, b, c], [a, c, d]] {
+            if reversed {
+                t.reverse();
+            }
+            let p = t.map(|i| {
+                let [x, y, z] = v(i);
+                format!("<{x},{y},{z}>")
+            });
+            s += &format!("  triangle {{ {}, {}, {} }}\n", p[0], p[1], p[2]);
+        }
+    }
+    s + "  pigment { rgbf <1,1,1,0.9> } interior { ior 1.5 } rotate y*30 }\n"
+}
+
+#[test]
+fn glass_meshes_refract_the_same_whichever_way_their_triangles_wind() {
+    // POV-Ray tells entering from leaving by the objects a ray is in, so the
+    // order of a triangle's corners does not matter (measured: the same
+    // picture both ways); an outward-wound cube is checked to bend light.
+    let scene = |mesh: String| {
+        format!(
+            "global_settings {{ assumed_gamma 1 }}\n\
+             camera {{ location <0,3,-6> look_at 0 angle 40 }}\n\
+             light_source {{ <5,10,-5> rgb 1 }}\n\
+             plane {{ z, 4 pigment {{ checker rgb <1,0,0> rgb <0,0,1> scale 0.5 }} }}\n\
+             {mesh}"
+        )
+    };
+    let out = render_source(
+        "shading",
+        "glass_out",
+        &scene(glass_mesh_cube(false)),
+        48,
+        36,
+    );
+    let rev = render_source(
+        "shading",
+        "glass_rev",
+        &scene(glass_mesh_cube(true)),
+        48,
+        36,
+    );
+    assert_eq!(out, rev);
+    let flat = render_source(
+        "shading",
+        "glass_ior1",
+        &scene(glass_mesh_cube(false).replace("ior 1.5", "ior 1")),
+        48,
+        36,
+    );
+    assert_ne!(out, flat, "the glass should bend the checker behind it");
+}
+
+#[test]
+fn slope_sees_the_side_of_the_surface_the_ray_meets() {
+    // Looking down onto triangles of either winding, a disc facing down and
+    // the inside of a sphere: `slope y` is 1 on all of them, as in POV-Ray.
+    for (i, obj) in [
+        "triangle { <-1,0,-1>, <1,0,-1>, <0,0,1> }",
+        "triangle { <-1,0,-1>, <0,0,1>, <1,0,-1> }",
+        "disc { 0, -y, 2 }",
+        "sphere { <0,0.9,0>, 1 }",
+    ]
+    .iter()
+    .enumerate()
+    {
+        let scene = format!(
+            "global_settings {{ assumed_gamma 1 }}\n\
+             camera {{ location <0,1,0.01> look_at 0 }}\n\
+             object {{ {obj} pigment {{ slope y color_map {{ [0 rgb x] [1 rgb y] }} }}\n\
+               finish {{ ambient 1 diffuse 0 }} }}\n"
+        );
+        let px = render_source("shading", &format!("slope_side_{i}"), &scene, 9, 9);
+        let [r, g, _] = px[4 * 9 + 4];
+        assert!(g > 0.99 && r < 0.01, "{obj}: {r} {g}");
+    }
+}

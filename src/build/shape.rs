@@ -333,6 +333,23 @@ impl PrimShape {
         }
     }
 
+    /// Whether the side the normal points to comes from how the scene wrote the
+    /// surface (the order of a triangle's corners, a disc's normal) rather than
+    /// from an inside: triangles, meshes, polygons and discs. Rays then tell
+    /// entering from leaving by the interiors they are in, as POV-Ray does for
+    /// every object (measured: a glass mesh cube renders the same wound either
+    /// way round).
+    pub fn sided_by_winding(&self) -> bool {
+        matches!(
+            self,
+            PrimShape::Triangle { .. }
+                | PrimShape::SmoothTriangle(_)
+                | PrimShape::Mesh(_)
+                | PrimShape::Polygon(_)
+                | PrimShape::Disc { .. }
+        )
+    }
+
     /// Unnormalised outward geometric normal at `p` on part `sub` (this shape's space).
     pub fn normal(&self, p: DVec3, sub: u32) -> DVec3 {
         match self {

@@ -281,9 +281,11 @@ impl Evaluator<'_> {
                     continue;
                 }
                 // Split along the diagonal from (x, z + dz) to (x + dx, z), as
-                // POV-Ray does (checked against its pictures).
-                m.triangles.push([q[0], q[2], q[3]]);
-                m.triangles.push([q[0], q[3], q[1]]);
+                // POV-Ray does (checked against its pictures); wound so the
+                // faces' normals point up, as POV-Ray's `trace` and `slope`
+                // see them.
+                m.triangles.push([q[0], q[3], q[2]]);
+                m.triangles.push([q[0], q[1], q[3]]);
             }
         }
         if smooth {

@@ -195,7 +195,10 @@ impl Evaluator<'_> {
             data.uv_indices.resize(data.triangles.len(), [0; 3]);
         }
         Ok(Object::new(
-            Shape::Mesh(self.mesh_cache.intern(data)),
+            Shape::Mesh(self.mesh_cache.intern(MeshData {
+                text_winding: true,
+                ..data
+            })),
             c.span,
         ))
     }
@@ -405,7 +408,10 @@ impl Evaluator<'_> {
             );
         }
         Ok(Object::new(
-            Shape::Mesh(self.mesh_cache.intern(data)),
+            Shape::Mesh(self.mesh_cache.intern(MeshData {
+                text_winding: true,
+                ..data
+            })),
             c.span,
         ))
     }

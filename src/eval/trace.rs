@@ -6,7 +6,7 @@
 
 use super::value::{Value, Vector};
 use super::{Evaluator, R};
-use crate::build::{Ray, RayKind, World};
+use crate::build::{PrimShape, Ray, RayKind, World};
 use crate::diag::{codes, Diagnostic};
 use crate::scene::Object;
 use crate::span::Span;
@@ -171,5 +171,19 @@ fn nearest(world: &World, ray: &Ray) -> Option<(f64, DVec3)> {
     let hit = world.intersect(ray, T_MIN, f64::INFINITY, RayKind::Probe)?;
     let s = world.surface(ray, &hit);
     // A CSG's inverse is in its leaves' normals already; a plain shape's is a flag.
-    Some((hit.t, if s.flags.inverse { -s.normal } else { s.normal }))
+    let n = if s.flags.inverse { -s.normal } else { s.normal };
+    // Flat triangles written in the scene: POV-Ray's sense, `(c − a) × (b − a)`
+    // (measured: a triangle <-1,0,-1>, <1,0,-1>, <0,0,1> reports +y).
+    let flat_written = match &world.primitives[hit.prim as usize].shape {
+        PrimShape::Triangle { .. } => true,
+        PrimShape::Mesh(m) => {
+            m.data.text_winding
+                && m.data
+                    .normal_indices
+                    .get(hit.sub as usize)
+                    .is_none_or(|ix| ix[0] == u32::MAX)
+        }
+        _ => false,
+    };
+    Some((hit.t, if flat_written { -n } else { n }))
 }

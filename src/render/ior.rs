@@ -72,6 +72,27 @@ impl IorStack {
             .map_or(1.0, |i| self.iors[i])
     }
 
+    /// Whether the ray is in interior `key`, by what it was seen to enter.
+    pub fn holds(&self, key: usize) -> bool {
+        self.keys[..self.len].contains(&key)
+    }
+
+    /// Whether a ray meeting the surface at `s` along `dir` enters its object:
+    /// when the ray is not already in it, for surfaces whose normal's side is
+    /// only their winding (see `PrimShape::sided_by_winding`), else when it
+    /// meets the outside of the geometric normal.
+    pub fn entering(&self, world: &World, s: &SurfaceHit, dir: glam::DVec3) -> bool {
+        let by_winding = world
+            .primitives
+            .get(s.prim as usize)
+            .is_some_and(|p| p.shape.sided_by_winding());
+        if by_winding && self.len < DEPTH {
+            !self.holds(key(s))
+        } else {
+            dir.dot(s.geo_normal) < 0.0
+        }
+    }
+
     /// The ray enters interior `key` of index `ior`.
     pub fn enter(&mut self, key: usize, ior: f64) {
         if self.len < DEPTH {
@@ -95,7 +116,7 @@ impl IorStack {
     pub fn sides(&self, key: usize, ior: f64, entering: bool) -> (f64, f64) {
         if entering {
             (self.current(), ior)
-        } else if self.keys[..self.len].contains(&key) {
+        } else if self.holds(key) {
             (self.current(), self.outside(key))
         } else {
             // Leaving what it was not seen to enter (it started inside, or

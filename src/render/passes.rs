@@ -66,7 +66,7 @@ pub fn sample(world: &World, ray: &Ray, pass: Pass, max_depth: f64) -> DVec3 {
             }
             // A patterned texture: its textures' pigments, averaged by weight.
             let mut albedo = DVec3::ZERO;
-            pigment::slope::set_surface_normal(s.normal);
+            pigment::slope::set_surface_normal_facing(s.normal, ray.dir);
             pigment::for_each_plain(s.texture, tp, 1.0, &mut |t, w| {
                 albedo += w * pigment::evaluate(&t.pigment, tp).rgb
             });

@@ -188,7 +188,7 @@ fn bump_gain(kind: &crate::scene::PatternKind) -> f64 {
         // of a plane lit at 45° for `bozo 0.5` (granite and agate: 0.15, 0.16).
         K::Bozo => 0.105,
         K::Granite => 0.063,
-        K::Agate => 0.072,
+        K::Agate => 0.13,
         K::Dents => 0.2,
         K::Ripples => 0.36,
         K::Waves => 0.52,

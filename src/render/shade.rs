@@ -184,7 +184,7 @@ fn shade(
     weight: f64,
     ctx: &mut TraceCtx,
 ) -> DVec3 {
-    pigment::slope::set_surface_normal(s.normal);
+    pigment::slope::set_surface_normal_facing(s.normal, ray.dir);
     // `interior_texture`: seen from inside the surface (the ray leaving
     // through it), as POV-Ray shades it.
     if let Some(inside) = &s.texture.interior_texture {
@@ -258,8 +258,9 @@ fn shade_texture(
     let d = ray.dir.normalize();
     let facing = |n: DVec3| if n.dot(d) > 0.0 { -n } else { n };
     let ior = s.interior.map_or(1.0, |i| i.ior);
-    // Entering when the ray meets the outside of the geometric surface.
-    let entering = d.dot(geo_n) < 0.0;
+    // Entering when the ray meets the outside of the surface (or, for a
+    // triangle, mesh, polygon or disc, when it is not in the object yet).
+    let entering = ctx.iors.entering(world, s, d);
     // The indices on the near and far side (nested interiors: see `ior`).
     let (n_near, n_far) = ctx.iors.sides(super::ior::key(s), ior, entering);
     let eta_view = n_far / n_near;

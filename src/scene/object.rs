@@ -304,6 +304,12 @@ pub struct MeshData {
     pub texture_indices: Vec<[u32; 3]>,
     /// `inside_vector`: makes the mesh a solid (inside by ray parity).
     pub inside_vector: Option<DVec3>,
+    /// The triangles were written as `mesh` / `mesh2` text. rts's flat face
+    /// normal is `(b − a) × (c − a)`; POV-Ray's `trace` reports such a face's
+    /// as `(c − a) × (b − a)` (measured), so `trace` turns it round. Height
+    /// fields and tessellated patches are wound so their normals already
+    /// point as POV-Ray's do.
+    pub text_winding: bool,
 }
 
 impl MeshData {

@@ -440,7 +440,7 @@ impl<'a> Tracer<'a> {
         let tp = s
             .texture_from_world
             .map_or(s.p, |m| m.transform_point3(s.p));
-        pigment::slope::set_surface_normal(s.normal);
+        pigment::slope::set_surface_normal_facing(s.normal, ph.ray.dir);
         let (u, _) = self.random(i, 1 + split);
         let tex = pigment::plain_at(s.texture, tp, u);
         let facing = |n: DVec3| if n.dot(d) > 0.0 { -n } else { n };
@@ -449,7 +449,7 @@ impl<'a> Tracer<'a> {
             None => facing(s.normal),
         };
         let ior = s.interior.map_or(1.0, |i| i.ior);
-        let entering = d.dot(s.geo_normal) < 0.0;
+        let entering = ph.iors.entering(world, &s, d);
         let key = ior::key(&s);
         let (n_near, n_far) = ph.iors.sides(key, ior, entering);
         let eta_view = n_far / n_near;
