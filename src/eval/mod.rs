@@ -400,11 +400,41 @@ impl Evaluator<'_> {
         }
     }
 
+    /// Every word written in the bodies of the global macros.
+    fn names_in_macro_bodies(&self) -> rustc_hash::FxHashSet<String> {
+        let mut words = rustc_hash::FxHashSet::default();
+        for m in self.scope.global_macros() {
+            let (Some(first), Some(last)) = (m.body.first(), m.body.last()) else {
+                continue;
+            };
+            let (a, b) = (first.span(), last.span());
+            if a.file != b.file || a.start > b.end {
+                continue;
+            }
+            let text = &self.sources.get(a.file).text;
+            let Some(body) = text.get(a.start as usize..b.end as usize) else {
+                continue;
+            };
+            words.extend(
+                body.split(|c: char| !(c.is_alphanumeric() || c == '_'))
+                    .filter(|w| !w.is_empty())
+                    .map(str::to_string),
+            );
+        }
+        words
+    }
+
     fn finish_scene(mut self) -> Evaluated {
         if !crate::diag::has_errors(&self.diags) {
             let main = self.include_stack[0];
+            let in_macros = self.names_in_macro_bodies();
             for (name, span) in self.scope.unused_globals() {
-                if span.file != main || name.name().starts_with('_') {
+                // A name a macro's text refers to is used whenever the macro
+                // is called, even if this run never called it.
+                if span.file != main
+                    || name.name().starts_with('_')
+                    || in_macros.contains(&*name.name())
+                {
                     continue;
                 }
                 self.diags.push(

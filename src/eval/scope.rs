@@ -58,6 +58,17 @@ impl Scopes {
         v
     }
 
+    /// The macros bound globally.
+    pub(crate) fn global_macros(&self) -> Vec<std::rc::Rc<crate::syntax::ast::MacroDef>> {
+        self.frames[0]
+            .values()
+            .filter_map(|b| match &b.value {
+                Value::Macro(m) => Some(m.clone()),
+                _ => None,
+            })
+            .collect()
+    }
+
     /// The global bindings, with a short display of simple values (for editors).
     pub(crate) fn globals(&self) -> Vec<super::Declared> {
         let fmt = |v: &[f64]| {
