@@ -251,9 +251,14 @@ fn pattern_normals_are_as_strong_as_povray_s() {
     // A white plane seen from above, lit at 45°: the spread of its brightness
     // measures how far a normal pattern leans the surface. POV-Ray 3.7's values
     // (200x200, measured once): bozo 0.5 gives 0.0127, granite 0.5 0.149,
-    // agate 0.5 0.164, wrinkles 0.5 0.040, dents 0.5 0.024.
+    // agate 0.5 0.164, wrinkles 0.5 0.040, dents 0.5 0.024, waves 0.5 0.152,
+    // waves 0.5 frequency 2 0.1215 (waves tilt by their own spacing, not by
+    // frequency), ripples 0.5 0.0586.
     let cases = [
         ("bozo 0.5", 0.0127),
+        ("waves 0.5", 0.152),
+        ("waves 0.5 frequency 2", 0.1215),
+        ("ripples 0.5", 0.0586),
         ("granite 0.5", 0.149),
         ("agate 0.5", 0.164),
         ("wrinkles 0.5", 0.040),
@@ -273,6 +278,35 @@ fn pattern_normals_are_as_strong_as_povray_s() {
         assert!(
             (sd / want - 1.0).abs() < 0.25,
             "{normal}: deviation {sd:.4}, POV-Ray {want}"
+        );
+    }
+}
+
+#[test]
+fn ripples_and_waves_take_frequency_again_in_their_colour_map() {
+    // A plane 16 units wide under a black-to-white map, lit by ambient only:
+    // the spread of its grey levels. POV-Ray 3.7's (200x200, linear, measured
+    // once): waves 0.100, waves frequency 2 0.328, ripples frequency 2 0.354.
+    // A map that did not wrap at frequency 2 spreads waves by about 0.12.
+    let cases = [
+        ("waves", 0.100),
+        ("waves frequency 2", 0.328),
+        ("ripples frequency 2", 0.354),
+    ];
+    for (i, (pattern, want)) in cases.into_iter().enumerate() {
+        let scene = format!(
+            "global_settings {{ assumed_gamma 1.0 }}\n\
+             camera {{ orthographic location <0, 10, 0> look_at 0 right x*16 up z*16 sky z }}\n\
+             plane {{ y, 0 pigment {{ {pattern} color_map {{ [0 rgb 0] [1 rgb 1] }} }}\n\
+             finish {{ ambient 1 diffuse 0 }} }}\n"
+        );
+        let (_, px) = render(&format!("wave_map_{i}"), &scene, 100, 100);
+        let n = px.len() as f64;
+        let mean = px.iter().map(|p| p[0]).sum::<f64>() / n;
+        let sd = (px.iter().map(|p| (p[0] - mean).powi(2)).sum::<f64>() / n).sqrt();
+        assert!(
+            (sd / want - 1.0).abs() < 0.2,
+            "{pattern}: deviation {sd:.4}, POV-Ray {want}"
         );
     }
 }

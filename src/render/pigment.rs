@@ -170,6 +170,11 @@ pub fn colour_at(entries: &[(f64, Colour)], v: f64) -> Colour {
 /// same mean spatial frequency within 13%).
 const LEAN_BUMPS: f64 = 1.15;
 
+/// How far `waves` tilts the normal per unit of `bump_size` and of a centre's
+/// wave spacing (POV-Ray 3.7: `waves 0.1` tilts by 0.111 where its waves lie
+/// 1.09 apart).
+const WAVES_TILT: f64 = 1.02;
+
 /// The same for `wrinkles` (fitted to POV-Ray's contrast and mean darkening on a
 /// lit plane, both within 2%).
 const LEAN_WRINKLES: f64 = 0.75;
@@ -191,7 +196,7 @@ fn bump_gain(kind: &crate::scene::PatternKind) -> f64 {
         K::Agate => 0.13,
         K::Dents => 0.2,
         K::Ripples => 0.36,
-        K::Waves => 0.52,
+        K::Waves => WAVES_TILT,
         K::Wrinkles => LEAN_WRINKLES,
         // POV-Ray's quilted normal adds the cushion vector itself.
         K::Quilted { .. } => 1.0,
@@ -266,7 +271,11 @@ fn lean(normal: &Normal, p: DVec3, texture_from_world: Option<&DMat4>) -> DVec3 
             .as_ref()
             .map(|x| x.inverse.transform_vector3(DVec3::ONE).length() / 3f64.sqrt())
             .unwrap_or(1.0);
-    let analytic = if normal.accuracy.is_some() {
+    // (Ripples and waves have their own normals, whatever the accuracy: their
+    // values wrap at a frequency other than 1, their surfaces do not.)
+    let analytic = if normal.accuracy.is_some()
+        && !matches!(normal.kind, PatternKind::Ripples | PatternKind::Waves)
+    {
         None
     } else {
         analytic_slope(normal, p, texture_from_world)
@@ -300,11 +309,10 @@ fn lean(normal: &Normal, p: DVec3, texture_from_world: Option<&DMat4>) -> DVec3 
     };
     // The slope in the pattern's own units.
     let g = g / scale.max(1e-12);
-    // Ripples and waves keep their depth at any frequency, as in POV-Ray.
+    // Ripples keep their depth at any frequency, as in POV-Ray (waves' own
+    // normal does by itself).
     let freq = match normal.kind {
-        crate::scene::PatternKind::Ripples | crate::scene::PatternKind::Waves => {
-            normal.mods.frequency.abs().max(1e-9)
-        }
+        crate::scene::PatternKind::Ripples => normal.mods.frequency.abs().max(1e-9),
         _ => 1.0,
     };
     normal.bump_size * bump_gain(&normal.kind) / freq * g
@@ -415,7 +423,6 @@ mod tests {
             PatternKind::Bozo,
             PatternKind::Dents,
             PatternKind::Ripples,
-            PatternKind::Waves,
             PatternKind::Gradient(DVec3::new(0.2, 1.0, 0.5)),
         ];
         for kind in kinds {
@@ -445,11 +452,15 @@ mod tests {
                         continue;
                     };
                     let f = |q: DVec3| {
-                        patterns::value(
-                            &nrm.kind,
-                            tr.inverse.transform_point3(tex.inverse.transform_point3(q)),
-                            &nrm.mods,
-                        )
+                        let q = tr.inverse.transform_point3(tex.inverse.transform_point3(q));
+                        match nrm.kind {
+                            // Ripples lean by their surface, which a frequency
+                            // makes finer, not by the wrapped value.
+                            PatternKind::Ripples => {
+                                patterns::raw(&nrm.kind, q, &nrm.mods).clamp(0.0, 1.0)
+                            }
+                            _ => patterns::value(&nrm.kind, q, &nrm.mods),
+                        }
                     };
                     let h = 1e-6;
                     for (k, axis) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {

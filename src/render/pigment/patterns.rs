@@ -79,9 +79,10 @@ fn agate_turbulence(p: DVec3) -> f64 {
     sum
 }
 
-/// The raw value of a non-list pattern at `p` (before frequency, phase and wave),
-/// with turbulence already applied to `p` for the patterns that take it that way.
-fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
+/// The raw value of a non-list pattern at `p` (before the frequency, phase and
+/// wave that map it; `ripples` and `waves` space their waves by frequency and
+/// phase here too), with turbulence already applied to `p` for the patterns that take it that way.
+pub(crate) fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
     let g = m.noise_generator;
     match kind {
         PatternKind::Gradient(v) => p.dot(*v),
@@ -132,25 +133,23 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
             }
             (0.5 + WRINKLES_SPREAD * sum).clamp(0.0, 1.0)
         }
-        PatternKind::Ripples | PatternKind::Waves => {
-            let mut sum = 0.0;
+        PatternKind::Ripples => {
             let n = usize::from(m.number_of_waves.clamp(1, 10));
-            for (i, c) in CENTRES[..n].iter().enumerate() {
-                let d = (p - *c).length();
-                let f = if matches!(kind, PatternKind::Waves) {
-                    1.0 + (i as f64) / 10.0
-                } else {
-                    1.0
-                };
-                sum += (TAU * (d * m.frequency * f + m.phase)).sin() / n as f64;
-            }
+            let sum: f64 = CENTRES[..n]
+                .iter()
+                .map(|c| (TAU * ((p - *c).length() * m.frequency + m.phase)).sin())
+                .sum();
             // Spread like POV-Ray's (measured contrast of a grey-mapped render).
-            let spread = if matches!(kind, PatternKind::Waves) {
-                WAVES_SPREAD
-            } else {
-                RIPPLES_SPREAD
-            };
-            (0.5 + spread * sum).clamp(0.0, 1.0)
+            (0.5 + RIPPLES_SPREAD * sum / n as f64).clamp(0.0, 1.0)
+        }
+        PatternKind::Waves => {
+            let n = usize::from(m.number_of_waves.clamp(1, 10));
+            let sum: f64 = CENTRES[..n]
+                .iter()
+                .zip(WAVE_LENGTHS)
+                .map(|(c, l)| l * (TAU * ((p - *c).length() * m.frequency / l + m.phase)).sin())
+                .sum();
+            (0.5 + WAVES_SPREAD * sum / n as f64).clamp(0.0, 1.0)
         }
         PatternKind::Function(f) => f.eval3(p),
         PatternKind::Planar
@@ -176,9 +175,18 @@ pub fn grey(c: crate::scene::Colour) -> f64 {
     0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z
 }
 
-/// Spread of the `waves` sum around 0.5 (measured contrast of POV-Ray's
-/// grey-mapped render).
-const WAVES_SPREAD: f64 = 0.5;
+/// Spread of the `waves` sum around 0.5 per unit of wavelength: each centre's
+/// waves rise in proportion to their spacing, 0.2 a unit (measured on
+/// POV-Ray 3.7 with `number_of_waves` 1 to 10, each centre's waves told apart
+/// by the difference of successive counts: a wave 1.09 apart swings 0.218 about
+/// 0.5, one 5.95 apart 1.19).
+const WAVES_SPREAD: f64 = 0.2;
+
+/// The spacing of each `waves` centre's waves (times 1/`frequency`): ours,
+/// spread as POV-Ray's are (measured: its ten centres' waves lie 1.0 to 6.0
+/// units apart, most near 1 and a few long swells, which dominate the sum
+/// since height grows with spacing).
+const WAVE_LENGTHS: [f64; 10] = [1.0, 1.15, 2.2, 1.3, 1.05, 1.5, 1.2, 2.8, 4.5, 6.0];
 
 /// Spread of the `ripples` sum around 0.5 (as [`WAVES_SPREAD`]).
 const RIPPLES_SPREAD: f64 = 1.25;
@@ -294,6 +302,11 @@ fn cell_point(cell: DVec3) -> DVec3 {
 }
 
 /// The value in [0, 1] of a (non-list) pattern at `p`, with all modifiers.
+/// `ripples` and `waves` take `frequency` and `phase` twice, as POV-Ray 3.7
+/// does (measured: `waves frequency 2` under a black-to-white map spreads its
+/// grey levels with a standard deviation of 84 where the unwrapped surface
+/// gives 32, and rts now 84): once for the spacing of their waves, once more
+/// mapping the value, so the map wraps.
 pub fn value(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
     let q = warp(p, m);
     let v = raw(kind, q, m);
@@ -317,7 +330,6 @@ pub fn value(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
         {
             v.clamp(0.0, 1.0)
         }
-        PatternKind::Ripples | PatternKind::Waves => wave(m.wave, v),
         k if super::shapes::is_shape(k) => super::shapes::wave(m.wave, v * m.frequency + m.phase),
         // A function's value of exactly 1 stays 1 (as POV-Ray 3.7 shows:
         // `average` of `function { … } color_map { … }` entries that reach 1
@@ -355,6 +367,25 @@ pub fn lean_vector(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<DVec
             Some(-sum)
         }
         PatternKind::Quilted { .. } => Some(-super::shapes::quilt_vector(kind, warp(p, m))),
+        PatternKind::Waves => {
+            // POV-Ray's own normal for waves, not the value's slope: each
+            // centre tilts the surface by its wave spacing times the cosine of
+            // its phase, whatever the frequency (measured: `waves 0.1` tilts by
+            // 0.111 for waves 1.09 apart at frequency 0.5, 1 and 2 alike, and
+            // in proportion to the spacing over its ten centres).
+            let q = warp(p, m);
+            let n = usize::from(m.number_of_waves.clamp(1, 10));
+            let mut sum = DVec3::ZERO;
+            for (c, l) in CENTRES[..n].iter().zip(WAVE_LENGTHS) {
+                let r = q - *c;
+                let d = r.length();
+                if d > 0.0 {
+                    let cos = (TAU * (d * m.frequency / l + m.phase)).cos();
+                    sum += r * (l * cos / d);
+                }
+            }
+            Some(sum / n as f64)
+        }
         _ => None,
     }
 }
@@ -381,14 +412,14 @@ pub fn value_gradient(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<D
             let mut slope = DVec3::ZERO;
             let n = usize::from(m.number_of_waves.clamp(1, 10));
             let k = n as f64;
-            for (i, c) in CENTRES[..n].iter().enumerate() {
+            for (c, l) in CENTRES[..n].iter().zip(WAVE_LENGTHS) {
                 let r = p - *c;
                 let d = r.length();
-                let f = if waves { 1.0 + (i as f64) / 10.0 } else { 1.0 };
-                let (sin, cos) = (TAU * (d * m.frequency * f + m.phase)).sin_cos();
-                sum += sin / k;
+                let l = if waves { l } else { 1.0 };
+                let (sin, cos) = (TAU * (d * m.frequency / l + m.phase)).sin_cos();
+                sum += l * sin / k;
                 if d > 0.0 {
-                    slope += r * (cos * TAU * m.frequency * f / (k * d));
+                    slope += r * (cos * TAU * m.frequency / (k * d));
                 }
             }
             let spread = if waves { WAVES_SPREAD } else { RIPPLES_SPREAD };
