@@ -282,35 +282,6 @@ fn pattern_normals_are_as_strong_as_povray_s() {
     }
 }
 
-#[test]
-fn ripples_and_waves_take_frequency_again_in_their_colour_map() {
-    // A plane 16 units wide under a black-to-white map, lit by ambient only:
-    // the spread of its grey levels. POV-Ray 3.7's (200x200, linear, measured
-    // once): waves 0.100, waves frequency 2 0.328, ripples frequency 2 0.354.
-    // A map that did not wrap at frequency 2 spreads waves by about 0.12.
-    let cases = [
-        ("waves", 0.100),
-        ("waves frequency 2", 0.328),
-        ("ripples frequency 2", 0.354),
-    ];
-    for (i, (pattern, want)) in cases.into_iter().enumerate() {
-        let scene = format!(
-            "global_settings {{ assumed_gamma 1.0 }}\n\
-             camera {{ orthographic location <0, 10, 0> look_at 0 right x*16 up z*16 sky z }}\n\
-             plane {{ y, 0 pigment {{ {pattern} color_map {{ [0 rgb 0] [1 rgb 1] }} }}\n\
-             finish {{ ambient 1 diffuse 0 }} }}\n"
-        );
-        let (_, px) = render(&format!("wave_map_{i}"), &scene, 100, 100);
-        let n = px.len() as f64;
-        let mean = px.iter().map(|p| p[0]).sum::<f64>() / n;
-        let sd = (px.iter().map(|p| (p[0] - mean).powi(2)).sum::<f64>() / n).sqrt();
-        assert!(
-            (sd / want - 1.0).abs() < 0.2,
-            "{pattern}: deviation {sd:.4}, POV-Ray {want}"
-        );
-    }
-}
-
 /// A quad from -1 to 1 in x and y with uv coordinates from 0 to 1, in a mesh.
 const UV_QUAD: &str = "#declare Quad = mesh {\n\
     triangle { <-1, -1, 0>, <1, -1, 0>, <1, 1, 0> uv_vectors <0, 0>, <1, 0>, <1, 1> }\n\

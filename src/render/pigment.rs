@@ -170,11 +170,6 @@ pub fn colour_at(entries: &[(f64, Colour)], v: f64) -> Colour {
 /// same mean spatial frequency within 13%).
 const LEAN_BUMPS: f64 = 1.15;
 
-/// How far `waves` tilts the normal per unit of `bump_size` and of a centre's
-/// wave spacing (POV-Ray 3.7: `waves 0.1` tilts by 0.111 where its waves lie
-/// 1.09 apart).
-const WAVES_TILT: f64 = 1.02;
-
 /// The same for `wrinkles` (fitted to POV-Ray's contrast and mean darkening on a
 /// lit plane, both within 2%).
 const LEAN_WRINKLES: f64 = 0.75;
@@ -195,11 +190,10 @@ fn bump_gain(kind: &crate::scene::PatternKind) -> f64 {
         K::Granite => 0.063,
         K::Agate => 0.13,
         K::Dents => 0.2,
-        K::Ripples => 0.36,
-        K::Waves => WAVES_TILT,
         K::Wrinkles => LEAN_WRINKLES,
-        // POV-Ray's quilted normal adds the cushion vector itself.
-        K::Quilted { .. } => 1.0,
+        // POV-Ray's quilted, ripples and waves normals add their vectors
+        // themselves.
+        K::Quilted { .. } | K::Ripples | K::Waves => 1.0,
         _ => 2.0 / 15.0,
     }
 }
@@ -215,13 +209,48 @@ pub fn perturb(normal: &Normal, n: DVec3, p: DVec3, texture_from_world: Option<&
     if normal.bump_size == 0.0 {
         return n;
     }
-    let lean = lean(normal, p, texture_from_world);
-    let out = n - (lean - lean.dot(n) * n);
+    let out = if leans_whole(&normal.kind) {
+        whole(normal, n, p, texture_from_world)
+    } else {
+        let lean = lean(normal, p, texture_from_world);
+        n - (lean - lean.dot(n) * n)
+    };
     let len = out.length();
     if len > 0.0 && len.is_finite() {
         out / len
     } else {
         n
+    }
+}
+
+/// Whether a normal pattern's vector is added whole to the surface normal, its
+/// part along the normal included (POV-Ray's `ripples` and `waves`: measured,
+/// a centre above a lit plane deepens the waves on one side of it), rather than
+/// only tilting it.
+fn leans_whole(kind: &PatternKind) -> bool {
+    matches!(kind, PatternKind::Ripples | PatternKind::Waves)
+}
+
+/// `n` (world space) with a [`leans_whole`] pattern's vector added, unnormalised:
+/// as POV-Ray does it (measured on planes and spheres, uniformly and unevenly
+/// scaled), the normal is carried into pattern space and made unit there, the
+/// vector times `bump_size` added, and the sum carried back.
+fn whole(normal: &Normal, n: DVec3, p: DVec3, texture_from_world: Option<&DMat4>) -> DVec3 {
+    let (q, to_pattern) = pattern_frame(normal, p, texture_from_world);
+    let Some(v) = patterns::lean_vector(&normal.kind, q, &normal.mods) else {
+        return n;
+    };
+    // (lean_vector's vectors are what the normal leans against.)
+    let v = -normal.bump_size * v;
+    match to_pattern {
+        None => n + v,
+        Some(m) => {
+            // Normals go from world to pattern space by the inverse of the
+            // transposed world-to-pattern map, and back by the transpose.
+            let back = glam::DMat3::from_mat4(m).transpose();
+            let np = back.inverse() * n;
+            back * (np.normalize_or_zero() + v)
+        }
     }
 }
 
@@ -271,8 +300,7 @@ fn lean(normal: &Normal, p: DVec3, texture_from_world: Option<&DMat4>) -> DVec3 
             .as_ref()
             .map(|x| x.inverse.transform_vector3(DVec3::ONE).length() / 3f64.sqrt())
             .unwrap_or(1.0);
-    // (Ripples and waves have their own normals, whatever the accuracy: their
-    // values wrap at a frequency other than 1, their surfaces do not.)
+    // (Ripples and waves have their own normals, whatever the accuracy.)
     let analytic = if normal.accuracy.is_some()
         && !matches!(normal.kind, PatternKind::Ripples | PatternKind::Waves)
     {
@@ -309,13 +337,7 @@ fn lean(normal: &Normal, p: DVec3, texture_from_world: Option<&DMat4>) -> DVec3 
     };
     // The slope in the pattern's own units.
     let g = g / scale.max(1e-12);
-    // Ripples keep their depth at any frequency, as in POV-Ray (waves' own
-    // normal does by itself).
-    let freq = match normal.kind {
-        crate::scene::PatternKind::Ripples => normal.mods.frequency.abs().max(1e-9),
-        _ => 1.0,
-    };
-    normal.bump_size * bump_gain(&normal.kind) / freq * g
+    normal.bump_size * bump_gain(&normal.kind) * g
 }
 
 /// The world-space vector `normal` leans against at world point `p`, when the
@@ -326,6 +348,22 @@ fn analytic_slope(normal: &Normal, p: DVec3, texture_from_world: Option<&DMat4>)
     if normal.kind.is_list() {
         return None;
     }
+    let (q, to_pattern) = pattern_frame(normal, p, texture_from_world);
+    let g = patterns::lean_vector(&normal.kind, q, &normal.mods)
+        .or_else(|| patterns::value_gradient(&normal.kind, q, &normal.mods))?;
+    Some(match to_pattern {
+        Some(m) => m.transpose().transform_vector3(g),
+        None => g,
+    })
+}
+
+/// World point `p` in `normal`'s pattern space, with the world → pattern map
+/// (`None`: the identity).
+fn pattern_frame(
+    normal: &Normal,
+    p: DVec3,
+    texture_from_world: Option<&DMat4>,
+) -> (DVec3, Option<DMat4>) {
     let mut q = p;
     let mut to_pattern: Option<DMat4> = None;
     if let Some(m) = texture_from_world {
@@ -339,12 +377,7 @@ fn analytic_slope(normal: &Normal, p: DVec3, texture_from_world: Option<&DMat4>)
             None => x.inverse,
         });
     }
-    let g = patterns::lean_vector(&normal.kind, q, &normal.mods)
-        .or_else(|| patterns::value_gradient(&normal.kind, q, &normal.mods))?;
-    Some(match to_pattern {
-        Some(m) => m.transpose().transform_vector3(g),
-        None => g,
-    })
+    (q, to_pattern)
 }
 
 #[cfg(test)]
@@ -422,7 +455,6 @@ mod tests {
         let kinds = [
             PatternKind::Bozo,
             PatternKind::Dents,
-            PatternKind::Ripples,
             PatternKind::Gradient(DVec3::new(0.2, 1.0, 0.5)),
         ];
         for kind in kinds {
@@ -452,15 +484,11 @@ mod tests {
                         continue;
                     };
                     let f = |q: DVec3| {
-                        let q = tr.inverse.transform_point3(tex.inverse.transform_point3(q));
-                        match nrm.kind {
-                            // Ripples lean by their surface, which a frequency
-                            // makes finer, not by the wrapped value.
-                            PatternKind::Ripples => {
-                                patterns::raw(&nrm.kind, q, &nrm.mods).clamp(0.0, 1.0)
-                            }
-                            _ => patterns::value(&nrm.kind, q, &nrm.mods),
-                        }
+                        patterns::value(
+                            &nrm.kind,
+                            tr.inverse.transform_point3(tex.inverse.transform_point3(q)),
+                            &nrm.mods,
+                        )
                     };
                     let h = 1e-6;
                     for (k, axis) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {

@@ -82,7 +82,7 @@ fn agate_turbulence(p: DVec3) -> f64 {
 /// The raw value of a non-list pattern at `p` (before the frequency, phase and
 /// wave that map it; `ripples` and `waves` space their waves by frequency and
 /// phase here too), with turbulence already applied to `p` for the patterns that take it that way.
-pub(crate) fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
+fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
     let g = m.noise_generator;
     match kind {
         PatternKind::Gradient(v) => p.dot(*v),
@@ -178,36 +178,40 @@ pub fn grey(c: crate::scene::Colour) -> f64 {
 /// Spread of the `waves` sum around 0.5 per unit of wavelength: each centre's
 /// waves rise in proportion to their spacing, 0.2 a unit (measured on
 /// POV-Ray 3.7 with `number_of_waves` 1 to 10, each centre's waves told apart
-/// by the difference of successive counts: a wave 1.09 apart swings 0.218 about
-/// 0.5, one 5.95 apart 1.19).
+/// by the difference of successive counts: every centre's swing about 0.5
+/// times its wave frequency is 0.2000).
 const WAVES_SPREAD: f64 = 0.2;
 
-/// The spacing of each `waves` centre's waves (times 1/`frequency`): ours,
-/// spread as POV-Ray's are (measured: its ten centres' waves lie 1.0 to 6.0
-/// units apart, most near 1 and a few long swells, which dominate the sum
-/// since height grows with spacing).
-const WAVE_LENGTHS: [f64; 10] = [1.0, 1.15, 2.2, 1.3, 1.05, 1.5, 1.2, 2.8, 4.5, 6.0];
+/// The spacing of each `waves` centre's waves (times 1/`frequency`), in the
+/// order of [`CENTRES`] (measured on POV-Ray 3.7 as for [`WAVES_SPREAD`]: sine
+/// fits over two planes, residual below 2e-4 of the grey range).
+const WAVE_LENGTHS: [f64; 10] = [
+    1.08800, 1.04162, 2.30856, 1.40984, 1.45098, 1.00863, 1.27718, 2.49584, 4.35404, 5.93426,
+];
 
-/// Spread of the `ripples` sum around 0.5 (as [`WAVES_SPREAD`]).
-const RIPPLES_SPREAD: f64 = 1.25;
+/// Spread of the `ripples` sum around 0.5: the mean of the centres' sines
+/// swings by half the grey range (measured as for [`WAVES_SPREAD`]: a single
+/// centre's ripples reach exactly 0 and 1).
+const RIPPLES_SPREAD: f64 = 0.5;
 
 /// Spread of the wrinkles sum around 0.5 (fitted to the contrast of POV-Ray's
 /// grey-mapped wrinkles).
 const WRINKLES_SPREAD: f64 = 1.0;
 
-/// Ten fixed wave centres for `ripples` and `waves`, scattered in the unit cube
-/// around the origin (ours; POV-Ray's are random).
+/// The ten wave centres of `ripples` and `waves`, points on the unit sphere, in
+/// the order `number_of_waves` takes them (measured on POV-Ray 3.7: each
+/// centre's rings fitted over two planes of a grey-mapped render, to 1e-5).
 const CENTRES: [DVec3; 10] = [
-    DVec3::new(0.12, -0.31, 0.41),
-    DVec3::new(-0.44, 0.09, -0.17),
-    DVec3::new(0.37, 0.45, -0.36),
-    DVec3::new(-0.21, -0.47, 0.06),
-    DVec3::new(0.48, 0.13, 0.22),
-    DVec3::new(-0.05, 0.33, 0.47),
-    DVec3::new(-0.39, -0.12, -0.45),
-    DVec3::new(0.26, -0.06, -0.08),
-    DVec3::new(-0.28, 0.41, 0.29),
-    DVec3::new(0.03, -0.24, -0.33),
+    DVec3::new(-0.60438, 0.49205, -0.62659),
+    DVec3::new(-0.55257, -0.24608, -0.79631),
+    DVec3::new(-0.44455, 0.62333, 0.64330),
+    DVec3::new(0.49659, 0.66895, 0.55309),
+    DVec3::new(-0.06437, -0.80595, -0.58847),
+    DVec3::new(0.24619, -0.91456, -0.32090),
+    DVec3::new(-0.66609, -0.59188, -0.45388),
+    DVec3::new(-0.52049, -0.38603, -0.76163),
+    DVec3::new(0.13795, -0.70464, -0.69602),
+    DVec3::new(0.56490, 0.72204, -0.39944),
 ];
 
 /// The point after the `warp { }` steps and turbulence (`p + turbulence · turb(p)`).
@@ -367,32 +371,36 @@ pub fn lean_vector(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<DVec
             Some(-sum)
         }
         PatternKind::Quilted { .. } => Some(-super::shapes::quilt_vector(kind, warp(p, m))),
-        PatternKind::Waves => {
-            // POV-Ray's own normal for waves, not the value's slope: each
-            // centre tilts the surface by its wave spacing times the cosine of
-            // its phase, whatever the frequency (measured: `waves 0.1` tilts by
-            // 0.111 for waves 1.09 apart at frequency 0.5, 1 and 2 alike, and
-            // in proportion to the spacing over its ten centres).
+        PatternKind::Ripples | PatternKind::Waves => {
+            // POV-Ray's own normals for these, not their values' slopes: each
+            // centre adds its unit direction from the centre times the sine of
+            // its waves' phase (times its wave spacing for waves), averaged
+            // over the centres; neither frequency nor scale changes the depth
+            // (measured on POV-Ray 3.7: lit planes fitted to 1e-3 of the grey
+            // range for one, two and ten centres, frequency 0.5 to 3, phase,
+            // scale 0.5 and 2). The surface gains the whole vector (see
+            // `leans_whole`), so it leans *with* it.
+            let waves = matches!(kind, PatternKind::Waves);
             let q = warp(p, m);
             let n = usize::from(m.number_of_waves.clamp(1, 10));
             let mut sum = DVec3::ZERO;
             for (c, l) in CENTRES[..n].iter().zip(WAVE_LENGTHS) {
+                let l = if waves { l } else { 1.0 };
                 let r = q - *c;
                 let d = r.length();
                 if d > 0.0 {
-                    let cos = (TAU * (d * m.frequency / l + m.phase)).cos();
-                    sum += r * (l * cos / d);
+                    let sin = (TAU * (d * m.frequency / l + m.phase)).sin();
+                    sum += r * (l * sin / d);
                 }
             }
-            Some(sum / n as f64)
+            Some(-sum / n as f64)
         }
         _ => None,
     }
 }
 
 /// The gradient of [`value`] at `p`, computed analytically for the slope-based
-/// normal patterns normals mostly use (`bozo`, `dents`, `ripples`, `waves`,
-/// `gradient`) without turbulence; `None` for the others, whose slope is taken by
+/// normal patterns normals mostly use (`bozo`, `dents`, `gradient`) without turbulence; `None` for the others, whose slope is taken by
 /// differences. Equal to the differences of [`value`] (a unit test checks).
 pub fn value_gradient(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<DVec3> {
     if m.turbulence != DVec3::ZERO || m.wave != Wave::Ramp || m.warps.is_some() {
@@ -405,30 +413,6 @@ pub fn value_gradient(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<D
         PatternKind::Dents if plain => {
             let (n, d) = noise_grad(p, g);
             Some(3.0 * n * n * d)
-        }
-        PatternKind::Ripples | PatternKind::Waves => {
-            let waves = matches!(kind, PatternKind::Waves);
-            let mut sum = 0.0;
-            let mut slope = DVec3::ZERO;
-            let n = usize::from(m.number_of_waves.clamp(1, 10));
-            let k = n as f64;
-            for (c, l) in CENTRES[..n].iter().zip(WAVE_LENGTHS) {
-                let r = p - *c;
-                let d = r.length();
-                let l = if waves { l } else { 1.0 };
-                let (sin, cos) = (TAU * (d * m.frequency / l + m.phase)).sin_cos();
-                sum += l * sin / k;
-                if d > 0.0 {
-                    slope += r * (cos * TAU * m.frequency / (k * d));
-                }
-            }
-            let spread = if waves { WAVES_SPREAD } else { RIPPLES_SPREAD };
-            let v = 0.5 + spread * sum;
-            Some(if (0.0..=1.0).contains(&v) {
-                slope * spread
-            } else {
-                DVec3::ZERO
-            })
         }
         PatternKind::Gradient(dir) => Some(*dir * m.frequency),
         _ => None,
