@@ -81,7 +81,8 @@ fn agate_turbulence(p: DVec3) -> f64 {
 
 /// The raw value of a non-list pattern at `p` (before the frequency, phase and
 /// wave that map it; `ripples` and `waves` space their waves by frequency and
-/// phase here too), with turbulence already applied to `p` for the patterns that take it that way.
+/// phase here too), with turbulence already applied to `p` for the patterns
+/// that take it that way.
 fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
     let g = m.noise_generator;
     match kind {
@@ -133,23 +134,18 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
             }
             (0.5 + WRINKLES_SPREAD * sum).clamp(0.0, 1.0)
         }
-        PatternKind::Ripples => {
-            let n = usize::from(m.number_of_waves.clamp(1, 10));
-            let sum: f64 = CENTRES[..n]
-                .iter()
-                .map(|c| (TAU * ((p - *c).length() * m.frequency + m.phase)).sin())
+        PatternKind::Ripples | PatternKind::Waves => {
+            let sources = wave_sources(kind, m);
+            let n = sources.len() as f64;
+            let sum: f64 = sources
+                .map(|(c, l)| l * (TAU * ((p - c).length() * m.frequency / l + m.phase)).sin())
                 .sum();
-            // Spread like POV-Ray's (measured contrast of a grey-mapped render).
-            (0.5 + RIPPLES_SPREAD * sum / n as f64).clamp(0.0, 1.0)
-        }
-        PatternKind::Waves => {
-            let n = usize::from(m.number_of_waves.clamp(1, 10));
-            let sum: f64 = CENTRES[..n]
-                .iter()
-                .zip(WAVE_LENGTHS)
-                .map(|(c, l)| l * (TAU * ((p - *c).length() * m.frequency / l + m.phase)).sin())
-                .sum();
-            (0.5 + WAVES_SPREAD * sum / n as f64).clamp(0.0, 1.0)
+            let spread = if matches!(kind, PatternKind::Waves) {
+                WAVES_SPREAD
+            } else {
+                RIPPLES_SPREAD
+            };
+            (0.5 + spread * sum / n).clamp(0.0, 1.0)
         }
         PatternKind::Function(f) => f.eval3(p),
         PatternKind::Planar
@@ -213,6 +209,20 @@ const CENTRES: [DVec3; 10] = [
     DVec3::new(0.13795, -0.70464, -0.69602),
     DVec3::new(0.56490, 0.72204, -0.39944),
 ];
+
+/// The first `number_of_waves` of [`CENTRES`] with the spacing of their waves
+/// (the measured [`WAVE_LENGTHS`] for `waves`, 1 for `ripples`).
+fn wave_sources(
+    kind: &PatternKind,
+    m: &PatternMods,
+) -> impl ExactSizeIterator<Item = (DVec3, f64)> {
+    let waves = matches!(kind, PatternKind::Waves);
+    let n = usize::from(m.number_of_waves.clamp(1, 10));
+    CENTRES[..n]
+        .iter()
+        .zip(WAVE_LENGTHS)
+        .map(move |(c, l)| (*c, if waves { l } else { 1.0 }))
+}
 
 /// The point after the `warp { }` steps and turbulence (`p + turbulence · turb(p)`).
 pub fn warp(p: DVec3, m: &PatternMods) -> DVec3 {
@@ -307,9 +317,8 @@ fn cell_point(cell: DVec3) -> DVec3 {
 
 /// The value in [0, 1] of a (non-list) pattern at `p`, with all modifiers.
 /// `ripples` and `waves` take `frequency` and `phase` twice, as POV-Ray 3.7
-/// does (measured: `waves frequency 2` under a black-to-white map spreads its
-/// grey levels with a standard deviation of 84 where the unwrapped surface
-/// gives 32, and rts now 84): once for the spacing of their waves, once more
+/// does (measured: the same pictures to the 8-bit level under a colour map at
+/// frequency 2 and phase 0.3): once for the spacing of their waves, once more
 /// mapping the value, so the map wraps.
 pub fn value(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
     let q = warp(p, m);
@@ -380,28 +389,27 @@ pub fn lean_vector(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<DVec
             // range for one, two and ten centres, frequency 0.5 to 3, phase,
             // scale 0.5 and 2). The surface gains the whole vector (see
             // `leans_whole`), so it leans *with* it.
-            let waves = matches!(kind, PatternKind::Waves);
             let q = warp(p, m);
-            let n = usize::from(m.number_of_waves.clamp(1, 10));
+            let sources = wave_sources(kind, m);
+            let n = sources.len() as f64;
             let mut sum = DVec3::ZERO;
-            for (c, l) in CENTRES[..n].iter().zip(WAVE_LENGTHS) {
-                let l = if waves { l } else { 1.0 };
-                let r = q - *c;
+            for (c, l) in sources {
+                let r = q - c;
                 let d = r.length();
                 if d > 0.0 {
                     let sin = (TAU * (d * m.frequency / l + m.phase)).sin();
                     sum += r * (l * sin / d);
                 }
             }
-            Some(-sum / n as f64)
+            Some(-sum / n)
         }
         _ => None,
     }
 }
 
 /// The gradient of [`value`] at `p`, computed analytically for the slope-based
-/// normal patterns normals mostly use (`bozo`, `dents`, `gradient`) without turbulence; `None` for the others, whose slope is taken by
-/// differences. Equal to the differences of [`value`] (a unit test checks).
+/// normal patterns normals mostly use (`bozo`, `dents`, `gradient`) without
+/// turbulence; `None` for the others, whose slope is taken by differences. Equal to the differences of [`value`] (a unit test checks).
 pub fn value_gradient(kind: &PatternKind, p: DVec3, m: &PatternMods) -> Option<DVec3> {
     if m.turbulence != DVec3::ZERO || m.wave != Wave::Ramp || m.warps.is_some() {
         return None;
