@@ -25,6 +25,7 @@ pub const STDLIB: &[(&str, &str)] = &[
     ("shapes.inc", include_str!("../stdlib/shapes.inc")),
     ("shapes2.inc", include_str!("../stdlib/shapes2.inc")),
     ("shapes_old.inc", include_str!("../stdlib/shapes_old.inc")),
+    ("shapesq.inc", include_str!("../stdlib/shapesq.inc")),
     ("skies.inc", include_str!("../stdlib/skies.inc")),
     ("stdinc.inc", include_str!("../stdlib/stdinc.inc")),
     ("stones.inc", include_str!("../stdlib/stones.inc")),
