@@ -301,9 +301,7 @@ fn lean(normal: &Normal, p: DVec3, texture_from_world: Option<&DMat4>) -> DVec3 
             .map(|x| x.inverse.transform_vector3(DVec3::ONE).length() / 3f64.sqrt())
             .unwrap_or(1.0);
     // (Ripples and waves have their own normals, whatever the accuracy.)
-    let analytic = if normal.accuracy.is_some()
-        && !matches!(normal.kind, PatternKind::Ripples | PatternKind::Waves)
-    {
+    let analytic = if normal.accuracy.is_some() && !leans_whole(&normal.kind) {
         None
     } else {
         analytic_slope(normal, p, texture_from_world)
