@@ -1,20 +1,10 @@
 //! "Did you mean" suggestions by edit distance.
 
-/// Levenshtein distance between two short strings (case-insensitive).
+/// Edit distance between two short strings, case-insensitive: insertions,
+/// deletions, substitutions and swaps of neighbours (`widht` is one edit from
+/// `width`) each count one (strsim's optimal string alignment distance).
 fn distance(a: &str, b: &str) -> usize {
-    let a: Vec<char> = a.chars().flat_map(char::to_lowercase).collect();
-    let b: Vec<char> = b.chars().flat_map(char::to_lowercase).collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    let mut cur = vec![0; b.len() + 1];
-    for (i, ca) in a.iter().enumerate() {
-        cur[0] = i + 1;
-        for (j, cb) in b.iter().enumerate() {
-            let sub = prev[j] + usize::from(ca != cb);
-            cur[j + 1] = sub.min(prev[j + 1] + 1).min(cur[j] + 1);
-        }
-        std::mem::swap(&mut prev, &mut cur);
-    }
-    prev[b.len()]
+    strsim::osa_distance(&a.to_lowercase(), &b.to_lowercase())
 }
 
 /// The candidate closest to `word`, if it is close enough to be a likely typo
@@ -46,5 +36,7 @@ mod tests {
         assert_eq!(did_you_mean("spehre", ["sphere", "plane"]), Some("sphere"));
         assert_eq!(did_you_mean("xyzzy", ["sphere", "plane"]), None);
         assert_eq!(distance("abc", "abc"), 0);
+        // A swap of neighbours is one typo.
+        assert_eq!(did_you_mean("widht", ["width", "wood"]), Some("width"));
     }
 }
