@@ -158,7 +158,8 @@ pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
             || matches!(&p.shape, PrimShape::Csg(c) if c.leaves.iter().any(|l| with_media(&l.interior)))
     });
     let has_media = object_media || !scene.atmosphere.media.is_empty();
-    let tracks_interiors = has_media || !scene.atmosphere.fogs.is_empty();
+    let tracks_interiors =
+        has_media || !scene.atmosphere.fogs.is_empty() || !scene.atmosphere.rainbows.is_empty();
     let mut world = World {
         camera: scene.camera.clone(),
         lights: scene.lights.clone(),

@@ -1,11 +1,11 @@
-//! `sky_sphere { … }`, `fog { … }` and `looks_like { … }`.
+//! `sky_sphere { … }`, `fog { … }`, `rainbow { … }` and `looks_like { … }`.
 
 use super::cursor::{Cursor, Tok};
 use super::objects::TRANSFORMS;
 use super::value::Value;
 use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
-use crate::scene::{Fog, FogKind, FogTurbulence, Object, SkySphere, Transform};
+use crate::scene::{Fog, FogKind, FogTurbulence, Object, Rainbow, SkySphere, Transform};
 use glam::DVec3;
 
 pub(crate) const SKY_ITEMS: &[&str] = &[
@@ -28,6 +28,18 @@ pub(crate) const FOG_ITEMS: &[&str] = &[
     "octaves",
     "omega",
     "lambda",
+];
+
+pub(crate) const RAINBOW_ITEMS: &[&str] = &[
+    "direction",
+    "angle",
+    "width",
+    "distance",
+    "jitter",
+    "color_map",
+    "up",
+    "arc_angle",
+    "falloff_angle",
 ];
 
 impl Evaluator<'_> {
@@ -236,6 +248,149 @@ impl Evaluator<'_> {
             colour: colour.unwrap_or(crate::scene::Colour::BLACK),
             turbulence: (turb.amount != DVec3::ZERO).then_some(turb),
         })
+    }
+
+    /// `rainbow { [RAINBOW_IDENTIFIER] direction <D> angle A width W [distance D]
+    /// [jitter J] [up <U>] [arc_angle ARC] [falloff_angle FALL] colour_map { … } }`:
+    /// a rainbow (added to the scene at top level, or declared). Defaults and
+    /// checks are POV-Ray 3.7's: angle and width 0 (no rainbow), distance 1e7, up
+    /// y, arc and falloff 360°; a zero direction, an up along the direction and a
+    /// falloff wider than the arc are errors.
+    pub(crate) fn rainbow(&mut self, c: &mut Cursor) -> R<Rainbow> {
+        let mut rb = Rainbow {
+            direction: DVec3::ZERO,
+            angle: 0.0,
+            width: 0.0,
+            distance: 1e7,
+            jitter: 0.0,
+            colour_map: std::sync::Arc::new(Vec::new()),
+            up: DVec3::Y,
+            arc_angle: 360.0,
+            falloff_angle: 360.0,
+        };
+        if let Some(Tok::Val(Value::Rainbow(_), _)) = c.peek() {
+            if let Some(Tok::Val(Value::Rainbow(r), _)) = c.next() {
+                rb = (*r).clone();
+            }
+        }
+        let mut spans = (None, None, None);
+        while let Some(tok) = c.next() {
+            let r: R<()> = match tok {
+                Tok::Kw(kw @ ("direction" | "up"), span) => {
+                    c.once(kw, span)?;
+                    let (v, s) = c.value(&format!("a vector after `{kw}`"))?;
+                    self.to_vec3(&v, s).map(|d| {
+                        if kw == "direction" {
+                            rb.direction = d;
+                            spans.0 = Some(s);
+                        } else {
+                            rb.up = d;
+                            spans.1 = Some(s);
+                        }
+                    })
+                }
+                Tok::Kw(kw @ ("angle" | "width" | "jitter"), span) => {
+                    c.once(kw, span)?;
+                    self.take_float(c, &format!("a number after `{kw}`"))
+                        .map(|v| match kw {
+                            "angle" => rb.angle = v,
+                            "width" => rb.width = v,
+                            _ => rb.jitter = v,
+                        })
+                }
+                Tok::Kw(kw @ ("arc_angle" | "falloff_angle"), span) => {
+                    c.once(kw, span)?;
+                    let (v, s) = c.value(&format!("an angle in degrees after `{kw}`"))?;
+                    let a = self.to_float(&v, s)?;
+                    if !(0.0..=360.0).contains(&a) {
+                        Err(Diagnostic::error(
+                            codes::OUT_OF_RANGE,
+                            s,
+                            format!("`{kw}` is between 0 and 360 degrees, found {a}"),
+                        )
+                        .with_help("360 (the default) is the whole circle")
+                        .into())
+                    } else {
+                        if kw == "arc_angle" {
+                            rb.arc_angle = a;
+                        } else {
+                            rb.falloff_angle = a;
+                        }
+                        spans.2 = Some(s);
+                        Ok(())
+                    }
+                }
+                Tok::Kw("distance", span) => {
+                    c.once("distance", span)?;
+                    let (v, s) = c.value("a positive number after `distance`")?;
+                    let d = self.to_float(&v, s)?;
+                    if d <= 0.0 {
+                        Err(Diagnostic::error(
+                            codes::OUT_OF_RANGE,
+                            s,
+                            format!("`distance` must be positive, found {d}"),
+                        )
+                        .with_help("as a fog's: leave it out (1e7) to keep the rainbow off objects")
+                        .into())
+                    } else {
+                        rb.distance = d;
+                        Ok(())
+                    }
+                }
+                Tok::Block(_, Value::ColourMap(m), _) => {
+                    rb.colour_map = m;
+                    Ok(())
+                }
+                other => Err(self.unexpected(c, &other, RAINBOW_ITEMS)),
+            };
+            if let Err(f) = r {
+                self.report(f);
+            }
+        }
+        let span = c.span;
+        let fail = |at: Option<crate::span::Span>, msg: &str, help: &str| {
+            Err(
+                Diagnostic::error(codes::OUT_OF_RANGE, at.unwrap_or(span), msg.to_string())
+                    .with_help(help.to_string())
+                    .into(),
+            )
+        };
+        if rb.direction.length_squared() == 0.0 {
+            return fail(
+                spans.0,
+                "a rainbow needs a non-zero `direction`",
+                "give the direction the sunlight travels in, e.g. `direction <-0.2, -0.2, 1>` (the rainbow rings it)",
+            );
+        }
+        rb.direction = rb.direction.normalize();
+        if rb.up.length_squared() == 0.0 || rb.up.cross(rb.direction).length_squared() < 1e-20 {
+            return fail(
+                spans.1,
+                "the rainbow's `up` lies along its `direction`",
+                "`up` marks the middle of the arc: give a vector across the direction, e.g. `up y`",
+            );
+        }
+        rb.up = rb.up.normalize();
+        if rb.falloff_angle > rb.arc_angle {
+            return fail(
+                spans.2,
+                &format!(
+                    "the rainbow's `falloff_angle` ({}) is wider than its `arc_angle` ({})",
+                    rb.falloff_angle, rb.arc_angle
+                ),
+                "the falloff angle is the part of the arc at full strength: make it no wider than the arc",
+            );
+        }
+        if rb.colour_map.is_empty() {
+            return Err(Diagnostic::error(
+                codes::MISSING_VALUE,
+                span,
+                "a rainbow needs a `color_map`",
+            )
+            .with_help("e.g. `color_map { [0 rgbf <1, 0, 1, 1>] [0.5 rgbf <0, 1, 0, 0.8>] [1 rgbf <1, 0, 0, 1>] }` (index 0 at the inner edge)")
+            .into());
+        }
+        Ok(rb)
     }
 
     /// `looks_like { OBJECT }` or `projected_through { OBJECT }` (`kw`): the object.

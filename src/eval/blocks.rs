@@ -38,6 +38,7 @@ pub(crate) const BLOCKS: &[&str] = &[
     "background",
     "sky_sphere",
     "fog",
+    "rainbow",
     "media",
     "scattering",
     "density",
@@ -182,6 +183,7 @@ impl Evaluator<'_> {
             }
             "sky_sphere" => Value::SkySphere(std::sync::Arc::new(self.sky_sphere(&mut c)?)),
             "fog" => Value::Fog(std::sync::Arc::new(self.fog(&mut c)?)),
+            "rainbow" => Value::Rainbow(std::sync::Arc::new(self.rainbow(&mut c)?)),
             "media" => Value::Media(std::sync::Arc::new(self.media(&mut c)?)),
             "scattering" => Value::Scattering(self.scattering(&mut c)?),
             "density" => Value::Pigment(std::sync::Arc::new(self.density(&mut c)?)),

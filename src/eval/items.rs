@@ -158,6 +158,10 @@ impl Evaluator<'_> {
                 self.scene.atmosphere.fogs.push(*f);
                 return;
             }
+            Tok::Block(_, Value::Rainbow(r), _) => {
+                self.scene.atmosphere.rainbows.push((*r).clone());
+                return;
+            }
             Tok::Block(_, Value::Media(m), _) => {
                 // Atmospheric media: several add up, as in an interior.
                 self.scene.atmosphere.media.push((*m).clone());

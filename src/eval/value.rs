@@ -164,6 +164,8 @@ pub enum Value {
     SkySphere(Arc<crate::scene::SkySphere>),
     /// A `fog { … }`.
     Fog(Arc<crate::scene::Fog>),
+    /// A `rainbow { … }`.
+    Rainbow(Arc<crate::scene::Rainbow>),
     /// A `media { … }`.
     Media(Arc<crate::scene::Media>),
     /// A `scattering { … }` (only meaningful inside a media).
@@ -234,6 +236,7 @@ impl Value {
             Value::Light(_) => "a light source",
             Value::SkySphere(_) => "a sky_sphere",
             Value::Fog(_) => "a fog",
+            Value::Rainbow(_) => "a rainbow",
             Value::Media(_) => "a media",
             Value::Scattering(_) => "a scattering block",
             Value::Material(_) => "a material",

@@ -1045,6 +1045,26 @@ pub const DOCS: &[Doc] = &[
     ),
     kw("fog_type", "fog_type T", "1 constant fog, 2 ground fog."),
     kw(
+        "rainbow",
+        "rainbow { direction <D> angle A width W color_map { … } [distance jitter up arc_angle falloff_angle] }",
+        "A fog-like ring of colour round the direction the sunlight travels in.",
+    ),
+    kw(
+        "width",
+        "width W",
+        "A rainbow's width in degrees (index 0 at its inner edge, 1 at its outer).",
+    ),
+    kw(
+        "arc_angle",
+        "arc_angle ARC",
+        "How much of a rainbow's ring is kept, in degrees round its `up` (default 360).",
+    ),
+    kw(
+        "falloff_angle",
+        "falloff_angle FALL",
+        "The middle of a rainbow's arc at full strength, in degrees; beyond it the arc fades out.",
+    ),
+    kw(
         "distance",
         "distance D",
         "The distance at which fog leaves 37% of the light.",

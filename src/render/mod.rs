@@ -25,7 +25,7 @@ mod shade;
 mod stats;
 
 pub use aa::{Antialias, Sampling};
-pub use atmosphere::{apply_fog, sky};
+pub use atmosphere::{apply_atmosphere, sky};
 pub use camera::primary_ray;
 pub use film::Film;
 pub use lights::{cylinder_attenuation, fade, incident, shadow, spot_attenuation, Incident};

@@ -154,7 +154,7 @@ pub fn trace_found(
         }
     };
     if !world.tracks_interiors {
-        return atmosphere::apply_fog(&world.atmosphere, ray, depth, colour);
+        return atmosphere::apply_atmosphere(&world.atmosphere, ray, depth, colour);
     }
     // Media and fog act only where every object the ray is in is hollow.
     let skip_media = ctx.radiosity.is_some_and(|r| r.skips_media(&ctx.rad));
@@ -164,7 +164,7 @@ pub fn trace_found(
         colour
     };
     if ctx.media.hollow() {
-        atmosphere::apply_fog(&world.atmosphere, ray, depth, colour)
+        atmosphere::apply_atmosphere(&world.atmosphere, ray, depth, colour)
     } else {
         colour
     }

@@ -1,4 +1,4 @@
-//! What rays meet outside objects: `sky_sphere` and `fog`.
+//! What rays meet outside objects: `sky_sphere`, `fog` and `rainbow`.
 
 use super::{Colour, Pigment, Transform};
 use glam::DVec3;
@@ -10,6 +10,8 @@ pub struct Atmosphere {
     pub sky_sphere: Option<SkySphere>,
     /// `fog { … }` blocks, applied to every ray in file order.
     pub fogs: Vec<Fog>,
+    /// `rainbow { … }` blocks.
+    pub rainbows: Vec<Rainbow>,
     /// Top-level `media { … }` blocks: atmospheric media filling all space
     /// (outside non-hollow objects).
     pub media: Vec<super::Media>,
@@ -73,4 +75,36 @@ pub enum FogKind {
         /// `up`: the direction of height (unit; default +y).
         up: DVec3,
     },
+}
+
+/// `rainbow { direction <D> angle A width W [distance D] [jitter J] [up <U>]
+/// [arc_angle ARC] [falloff_angle FALL] colour_map { … } }`: a fog-like band of
+/// colour seen where the angle between a ray and `direction` is within
+/// `angle ± width / 2`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Rainbow {
+    /// `direction`: the (unit) direction the rainbow's light travels in; the
+    /// rainbow is a ring around it.
+    pub direction: DVec3,
+    /// `angle`, in degrees: the angle of the ring's middle from `direction`.
+    pub angle: f64,
+    /// `width`, in degrees: the ring's width (index 0 at its inner edge, 1 at
+    /// its outer edge).
+    pub width: f64,
+    /// `distance`: as a fog's: something at depth d along the ray keeps
+    /// `exp(-d / distance)` of its colour (the rainbow shows in front of
+    /// objects only when this is small).
+    pub distance: f64,
+    /// `jitter`: the index moves by up to ± this, at random per ray.
+    pub jitter: f64,
+    /// The colours over the index (its `filter` and `transmit` as a fog's).
+    pub colour_map: std::sync::Arc<Vec<(f64, Colour)>>,
+    /// The arc: unit `up` (made perpendicular to `direction`) marks its middle.
+    pub up: DVec3,
+    /// `arc_angle` in degrees (360: a full circle).
+    pub arc_angle: f64,
+    /// `falloff_angle` in degrees (no greater than `arc_angle`): the middle part
+    /// of the arc at full strength; beyond it the rainbow fades out towards the
+    /// ends of the arc.
+    pub falloff_angle: f64,
 }

@@ -21,7 +21,7 @@ mod transform;
 mod warp;
 
 pub use animation::{Timeline, DEFAULT_FPS};
-pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, SkySphere};
+pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, Rainbow, SkySphere};
 pub use blob::{BlobComponent, BlobData, BlobKind};
 pub use camera::{Camera, CameraFace, CameraKind, CameraMesh, MeshCamera, UvGrid};
 pub use density::{DensityGrid, DF3_MAX_VOXELS};
