@@ -24,13 +24,14 @@ use pest::Parser;
 /// list holds an error the tree is incomplete and should not be evaluated.
 pub fn parse(text: &str, file: FileId) -> (ast::File, Vec<Diagnostic>) {
     let diags = prepass::check(text, file);
-    if !diags.is_empty() {
+    if diags.iter().any(Diagnostic::is_error) {
         return (ast::File::default(), diags);
     }
     let mut lower = lower::Lowerer {
         file,
         offset: 0,
-        diags: Vec::new(),
+        // The prepass's warnings come first.
+        diags,
     };
     match RtsParser::parse(Rule::file, text) {
         Ok(mut pairs) => {

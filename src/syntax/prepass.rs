@@ -368,6 +368,22 @@ impl Scanner<'_> {
                 );
                 return false;
             }
+        } else if word.is_empty() {
+            // POV-Ray ignores a `#` that no directive name follows (its sample
+            // language/image_size.pov has one before a `}`); so does the
+            // grammar, with this warning.
+            self.diags.push(
+                Diagnostic::warning(
+                    codes::UNKNOWN_DIRECTIVE,
+                    self.span(hash, hash + 1),
+                    "a `#` with no directive name after it is ignored",
+                )
+                .with_label("stray `#`")
+                .with_help(
+                    "remove it, or write the directive it was meant to start (e.g. `#declare`)",
+                ),
+            );
+            return true;
         } else if !PLAIN_DIRECTIVES.contains(&word) {
             let all = OPENING_DIRECTIVES
                 .iter()
@@ -379,11 +395,7 @@ impl Scanner<'_> {
                 Some(s) => format!("did you mean `#{s}`?"),
                 None => "directives are #declare #local #undef #if #ifdef #ifndef #else #elseif #switch #case #range #break #while #for #macro #end #include #debug #warning #error #default #version".into(),
             };
-            let msg = if word.is_empty() {
-                "`#` must be followed by a directive name".to_string()
-            } else {
-                format!("unknown directive `#{word}`")
-            };
+            let msg = format!("unknown directive `#{word}`");
             self.diags.push(
                 Diagnostic::error(codes::UNKNOWN_DIRECTIVE, span, msg)
                     .with_label("not a directive")
