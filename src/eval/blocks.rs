@@ -161,6 +161,11 @@ impl Evaluator<'_> {
             "irid" => Value::Irid(self.irid_block(&mut c)?),
             "normal" => Value::Normal(std::sync::Arc::new(self.normal(&mut c)?)),
             "interior" => Value::Interior(std::sync::Arc::new(self.interior(&mut c)?)),
+            // As in POV-Ray, a density map's entries may be densities (a map of
+            // densities, as a pigment map is of pigments) or colours.
+            "density_map" if c.rest().any(holds_pigment) => {
+                Value::PigmentMap(std::sync::Arc::new(self.pigment_map(&mut c)?))
+            }
             "color_map" | "colour_map" | "density_map" => {
                 Value::ColourMap(std::sync::Arc::new(self.colour_map(&mut c)?))
             }
@@ -226,4 +231,12 @@ impl Evaluator<'_> {
             .into()),
         }
     }
+}
+
+/// Whether map entry `t` (`[VALUE …]`) holds a pigment or density.
+fn holds_pigment(t: &Tok) -> bool {
+    matches!(t, Tok::Bracket(items, _) if items.iter().any(|i| matches!(
+        i,
+        Tok::Val(Value::Pigment(_), _) | Tok::Block(_, Value::Pigment(_), _)
+    )))
 }

@@ -156,6 +156,11 @@ impl Cursor {
         t
     }
 
+    /// The items still to come, without consuming them.
+    pub(crate) fn rest(&self) -> impl Iterator<Item = &Tok> {
+        self.peeked.iter().chain(self.toks.as_slice())
+    }
+
     /// The next item without consuming it.
     pub(crate) fn peek(&mut self) -> Option<&Tok> {
         if self.peeked.is_none() {
