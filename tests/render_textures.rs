@@ -679,3 +679,41 @@ sphere {{ 0, 1 {tex} }}"
         "uv_mapping before the texture had no effect"
     );
 }
+
+#[test]
+fn palette_filter_and_transmit_change_one_palette_colour() {
+    // A 2x1 palette PNG: index 0 red on the left, index 1 green on the right.
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("render_textures");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = std::fs::File::create(dir.join("palette.png")).unwrap();
+    let mut enc = png::Encoder::new(std::io::BufWriter::new(file), 2, 1);
+    enc.set_color(png::ColorType::Indexed);
+    enc.set_depth(png::BitDepth::Eight);
+    enc.set_palette(vec![255, 0, 0, 0, 255, 0]);
+    enc.write_header()
+        .unwrap()
+        .write_image_data(&[0, 1])
+        .unwrap();
+    // POV-Ray's `transmit PALETTE, AMOUNT`: the green half shows the blue
+    // background through it; the red half stays.
+    let scene = |mods: &str| {
+        format!(
+            "#version 3.7;
+             global_settings {{ assumed_gamma 1.0 }}
+             camera {{ orthographic location <0.5, 0.5, -1> look_at <0.5, 0.5, 0> right x up y }}
+             background {{ rgb <0, 0, 1> }}
+             polygon {{ 4, <0, 0>, <1, 0>, <1, 1>, <0, 1>
+               pigment {{ image_map {{ png \"palette.png\" {mods} }} }}
+               finish {{ ambient 1 diffuse 0 }} }}"
+        )
+    };
+    let (w, px) = render("palette_transmit", &scene("transmit 1, 1"), 8, 4);
+    let at = |x: u32, y: u32| px[(y * w + x) as usize];
+    assert!(close(at(1, 2), [1.0, 0.0, 0.0], 1e-3), "{:?}", at(1, 2));
+    assert!(close(at(6, 2), [0.0, 0.0, 1.0], 1e-3), "{:?}", at(6, 2));
+    // `filter 0, 1` tints what is behind by red: blue behind red is black.
+    let (w, px) = render("palette_filter", &scene("filter 0, 1"), 8, 4);
+    let at = |x: u32, y: u32| px[(y * w + x) as usize];
+    assert!(close(at(1, 2), [0.0, 0.0, 0.0], 1e-3), "{:?}", at(1, 2));
+    assert!(close(at(6, 2), [0.0, 1.0, 0.0], 1e-3), "{:?}", at(6, 2));
+}

@@ -1148,6 +1148,9 @@ impl Evaluator<'_> {
         };
         let mut filter_all: Option<f64> = None;
         let mut transmit_all: Option<f64> = None;
+        // `filter INDEX, AMOUNT` / `transmit INDEX, AMOUNT`: (is filter, palette
+        // index, amount, where).
+        let mut by_index: Vec<(bool, u8, f64, crate::span::Span)> = Vec::new();
         let mut file_gamma: Option<f64> = None;
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
@@ -1194,14 +1197,34 @@ impl Evaluator<'_> {
                 Tok::Kw(kw @ ("filter" | "transmit"), _) => {
                     if let Some(Tok::Kw("all", _)) = c.peek() {
                         c.next();
-                    }
-                    self.take_float(c, "the amount").map(|x| {
-                        if kw == "filter" {
-                            filter_all = Some(x)
+                        self.take_float(c, "the amount").map(|x| {
+                            if kw == "filter" {
+                                filter_all = Some(x)
+                            } else {
+                                transmit_all = Some(x)
+                            }
+                        })
+                    } else {
+                        // POV-Ray's `filter PALETTE, AMOUNT`: one colour of a
+                        // palette image.
+                        let (v, s) = c.value(&format!(
+                            "a palette index after `{kw}` (or `{kw} all AMOUNT`)"
+                        ))?;
+                        let i = self.to_float(&v, s)?;
+                        if !(0.0..=255.0).contains(&i) || i.fract() != 0.0 {
+                            Err(Diagnostic::error(
+                                codes::OUT_OF_RANGE,
+                                s,
+                                format!("a palette index is a whole number from 0 to 255, found {i}"),
+                            )
+                            .with_help(format!("`{kw} 5, 1` makes palette colour 5 clear; `{kw} all 0.5` the whole image"))
+                            .into())
                         } else {
-                            transmit_all = Some(x)
+                            c.comma();
+                            self.take_float(c, &format!("the amount after `{kw} {i},`"))
+                                .map(|x| by_index.push((kw == "filter", i as u8, x, s)))
                         }
-                    })
+                    }
                 }
                 other => Err(self.unexpected(c, &other, IMAGE_MAP_ITEMS)),
             };
@@ -1259,6 +1282,33 @@ impl Evaluator<'_> {
                 }
             })
             .collect();
+        if !by_index.is_empty() {
+            match super::pattern_blocks::palette_indices(&path)
+                .filter(|i| i.len() == im.pixels.len())
+            {
+                Some(indices) => {
+                    for (px, &k) in im.pixels.iter_mut().zip(&indices) {
+                        for &(is_filter, at, amount, _) in &by_index {
+                            if at == k {
+                                if is_filter {
+                                    px.filter = amount;
+                                } else {
+                                    px.transmit = amount;
+                                }
+                            }
+                        }
+                    }
+                }
+                None => self.warn(
+                    Diagnostic::warning(
+                        codes::IGNORED,
+                        by_index[0].3,
+                        format!("`{name}` has no palette: filter and transmit by palette index do nothing"),
+                    )
+                    .with_help("use `filter all AMOUNT` / `transmit all AMOUNT`, or an alpha channel"),
+                ),
+            }
+        }
         im.see_through = im.once || im.pixels.iter().any(|c| c.filter + c.transmit > 0.0);
         Ok(Pigment {
             pattern: Pattern::Image(Arc::new(im)),

@@ -487,7 +487,7 @@ impl Evaluator<'_> {
 
 /// The palette index of each pixel of `path`, if it is a PNG with a palette
 /// (row 0 at the top).
-fn palette_indices(path: &std::path::Path) -> Option<Vec<u8>> {
+pub(crate) fn palette_indices(path: &std::path::Path) -> Option<Vec<u8>> {
     let file = std::fs::File::open(path).ok()?;
     let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
     decoder.set_transformations(png::Transformations::IDENTITY);
