@@ -30,6 +30,12 @@ impl Evaluator<'_> {
                     self.deprecated.remove(&target.name);
                 }
                 let v = match value {
+                    Rhs::Block(b) if b.keyword.name == "function" && target.indices.is_empty() => {
+                        let outer = self.declaring_function.replace(target.name);
+                        let v = self.block_value(b);
+                        self.declaring_function = outer;
+                        v
+                    }
                     Rhs::Block(b) => self.block_value(b),
                     Rhs::Expr(e) => self.expr(e),
                     Rhs::Directive(cond) => self.directive_value(cond),

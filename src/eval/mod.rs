@@ -220,6 +220,7 @@ pub fn eval_cached(
         built_objects: Default::default(),
         blob_items: false,
         density_block: false,
+        declaring_function: None,
         pending_function: None,
         written: Default::default(),
         open_writes: Vec::new(),
@@ -306,6 +307,10 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) blob_items: bool,
     /// Set while a media's `density { }` is read: it starts from density 1.
     pub(crate) density_block: bool,
+    /// The name a `#declare NAME = function { … }` being evaluated binds: POV-Ray's
+    /// functions.inc declares its built-ins as `function { internal(NUMBER) }`,
+    /// and rts knows them by that name, not by POV-Ray's private numbers.
+    pub(crate) declaring_function: Option<crate::syntax::Sym>,
     /// A `function { }` met as a pattern, until the pattern reader takes it.
     pub(crate) pending_function: Option<Arc<function::Function>>,
     /// Files written by `#write` in this evaluation (see `file_io.rs`).

@@ -184,7 +184,7 @@ impl Evaluator<'_> {
                 })))
             }
             [Item::Keyword(k), Item::Expr(e)] if k.name == "internal" => {
-                self.internal_function(e, arity, b.span)
+                self.internal_function(e, b.params.is_some().then_some(arity), b.span)
             }
             [Item::Expr(e)] => {
                 let mut env = Env {
@@ -232,10 +232,38 @@ impl Evaluator<'_> {
         }
     }
 
-    /// `function(x, y, z, …) { internal("f_name") }`: a built-in of functions.inc.
-    fn internal_function(&mut self, e: &Expr, arity: usize, span: Span) -> R<Value> {
+    /// `function(x, y, z, …) { internal("f_name") }`: a built-in of functions.inc
+    /// (`arity`: the number of parameters declared, if any; without a list the
+    /// built-in's own count). POV-Ray's own form, `#declare f_name = function {
+    /// internal(NUMBER) }` (its functions.inc), is read by the declared name: its
+    /// numbers are private to POV-Ray and change between versions.
+    fn internal_function(&mut self, e: &Expr, arity: Option<usize>, span: Span) -> R<Value> {
         let v = self.expr(e)?;
-        let name = self.to_str(&v, e.span)?;
+        let name = match (&v, self.declaring_function) {
+            (Value::Float(_), Some(declared))
+                if super::internal::INTERNALS
+                    .iter()
+                    .any(|(m, _, _)| *m == &*declared.name()) =>
+            {
+                std::rc::Rc::<str>::from(&*declared.name())
+            }
+            (Value::Float(n), declared) => {
+                let help = match declared {
+                    Some(d) => format!(
+                        "rts knows functions.inc's built-ins by name, and `{d}` is not one of them: write `internal(\"f_name\")` with the built-in's name"
+                    ),
+                    None => "write `internal(\"f_name\")` with the built-in's name, or `#declare f_name = function { internal(…) }` under its functions.inc name".to_string(),
+                };
+                return Err(Diagnostic::error(
+                    codes::UNSUPPORTED,
+                    e.span,
+                    format!("`internal({n})`: POV-Ray's numbers for its built-in functions are its own (they change between versions)"),
+                )
+                .with_help(help)
+                .into());
+            }
+            _ => self.to_str(&v, e.span)?,
+        };
         let Some(&(_, n, f)) = super::internal::INTERNALS
             .iter()
             .find(|(m, _, _)| *m == &*name)
@@ -254,6 +282,7 @@ impl Evaluator<'_> {
             )
             .into());
         };
+        let arity = arity.unwrap_or(n);
         if n != arity {
             return Err(Diagnostic::error(
                 codes::ARITY,
