@@ -772,7 +772,5 @@ const POV_KEYWORDS_NOT_YET: &[&str] = &[
     "facets",
     "omnimax",
     "pavement",
-    "square",
     "tiling",
-    "triangular",
 ];

@@ -113,10 +113,11 @@ struct TexturePatternSpec {
 
 /// How many textures list pattern `kw` chooses between.
 fn list_len(kw: &str) -> usize {
-    if kw == "hexagon" {
-        3
-    } else {
-        2
+    match kw {
+        "hexagon" => 3,
+        "square" => 4,
+        "triangular" => 6,
+        _ => 2,
     }
 }
 

@@ -14,6 +14,8 @@ pub(crate) const PATTERNS: &[&str] = &[
     "checker",
     "object",
     "hexagon",
+    "square",
+    "triangular",
     "brick",
     "gradient",
     "radial",
@@ -185,6 +187,8 @@ impl Evaluator<'_> {
         let kind = match kw {
             "checker" => PatternKind::Checker,
             "hexagon" => PatternKind::Hexagon,
+            "square" => PatternKind::Square,
+            "triangular" => PatternKind::Triangular,
             "brick" => PatternKind::Brick {
                 size: DVec3::new(8.0, 3.0, 4.5),
                 mortar: 0.5,
@@ -229,12 +233,14 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    /// The colours or pigments after `checker`, `hexagon` or `brick`.
+    /// The colours or pigments after `checker`, `hexagon`, `square`,
+    /// `triangular` or `brick`.
     fn list_entries(&mut self, c: &mut Cursor, spec: &mut PatternSpec) -> R<()> {
-        let max = if matches!(spec.kind, Some(PatternKind::Hexagon)) {
-            3
-        } else {
-            2
+        let max = match spec.kind {
+            Some(PatternKind::Hexagon) => 3,
+            Some(PatternKind::Square) => 4,
+            Some(PatternKind::Triangular) => 6,
+            _ => 2,
         };
         spec.list.clear();
         while spec.list.len() < max {
@@ -273,6 +279,21 @@ impl Evaluator<'_> {
             PatternKind::Brick { .. } => {
                 &[Colour::rgb(0.5, 0.5, 0.5), Colour::rgb(0.6, 0.15, 0.15)]
             }
+            // Measured on POV-Ray 3.7 (its manual names other colours).
+            PatternKind::Square => &[
+                Colour::rgb(1.0, 0.0, 0.0),
+                Colour::rgb(0.0, 1.0, 0.0),
+                Colour::rgb(0.0, 0.0, 1.0),
+                Colour::rgb(1.0, 1.0, 0.0),
+            ],
+            PatternKind::Triangular => &[
+                Colour::rgb(1.0, 0.0, 0.0),
+                Colour::rgb(0.0, 1.0, 0.0),
+                Colour::rgb(0.0, 0.0, 1.0),
+                Colour::rgb(1.0, 1.0, 0.0),
+                Colour::rgb(0.0, 1.0, 1.0),
+                Colour::rgb(1.0, 0.0, 1.0),
+            ],
             _ => &[Colour::rgb(0.0, 0.0, 1.0), Colour::rgb(0.0, 1.0, 0.0)],
         };
         while list.len() < defaults.len() {

@@ -579,6 +579,16 @@ pub const DOCS: &[Doc] = &[
         "Hexagons in the x-z plane.",
     ),
     kw(
+        "square",
+        "square COLOUR, COLOUR, COLOUR, COLOUR",
+        "Unit squares in the x-z plane, in blocks of four entries.",
+    ),
+    kw(
+        "triangular",
+        "triangular COLOUR × 6",
+        "Equilateral triangles of side 1 in the x-z plane; six entries round each vertex.",
+    ),
+    kw(
         "brick",
         "brick COLOUR, COLOUR brick_size <V> mortar M",
         "A brick wall pattern.",

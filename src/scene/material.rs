@@ -228,6 +228,11 @@ pub enum PatternKind {
     Checker,
     /// `hexagon`: three-colour hexagonal tiling of the x-z plane.
     Hexagon,
+    /// `square`: four-colour tiling of the x-z plane by unit squares.
+    Square,
+    /// `triangular`: six-colour tiling of the x-z plane by equilateral triangles
+    /// of side 1.
+    Triangular,
     /// `brick`: bricks of `size` separated by `mortar`.
     Brick {
         /// `brick_size` (default <8, 3, 4.5>).
@@ -362,12 +367,15 @@ pub struct SlopeSpec {
 }
 
 impl PatternKind {
-    /// Whether the pattern selects entries by index (`checker`, `hexagon`, `brick`).
+    /// Whether the pattern selects entries by index (`checker`, `hexagon`,
+    /// `square`, `triangular`, `brick`).
     pub fn is_list(&self) -> bool {
         matches!(
             self,
             PatternKind::Checker
                 | PatternKind::Hexagon
+                | PatternKind::Square
+                | PatternKind::Triangular
                 | PatternKind::Brick { .. }
                 | PatternKind::MaterialMap(_)
                 | PatternKind::Object(_)

@@ -16,6 +16,8 @@ pub fn list_index(kind: &PatternKind, p: DVec3) -> usize {
     match kind {
         PatternKind::Checker => super::checker_index(p),
         PatternKind::Hexagon => hexagon_index(p),
+        PatternKind::Square => square_index(p),
+        PatternKind::Triangular => triangular_index(p),
         PatternKind::Brick { size, mortar } => usize::from(!is_mortar(p, *size, *mortar)),
         PatternKind::MaterialMap(im) => super::image_map::index_at(im, p),
         PatternKind::Object(t) => usize::from(t.inside(p)),
@@ -41,6 +43,38 @@ pub fn hexagon_index(p: DVec3) -> usize {
         rr = -rq - rs;
     }
     (rr + 2.0 * rq).rem_euclid(3.0) as usize % 3
+}
+
+/// `square`: unit squares tiling the x-z plane in blocks of four, the entries
+/// going round each block: the square of x and z in [0, 1) takes the first, the
+/// one beyond it in +z the second, the one diagonally across the third, the one
+/// in +x the fourth (measured on POV-Ray 3.7 at 3000 points, all agreeing).
+pub fn square_index(p: DVec3) -> usize {
+    let a = (p.x + EPS).floor().rem_euclid(2.0) as usize;
+    let b = (p.z + EPS).floor().rem_euclid(2.0) as usize;
+    [[0, 1], [3, 2]][a][b]
+}
+
+/// `triangular`: equilateral triangles of side 1 tiling the x-z plane, with
+/// edges along x at every multiple of √3/2 in z and a vertex at the origin; the
+/// six entries meet round every vertex. Within the band of rows `k` (z from
+/// k√3/2), `u` is x less half a unit in odd bands; the triangle with its base
+/// on the band's lower edge from u = i to i + 1 takes entry 1, 5 or 3 (i - k mod
+/// 2, mod 3 = 0, 1, 2) and the one with its apex there at u = c takes entry 2,
+/// 4 or 6 (c - k mod 2, mod 3). Measured on POV-Ray 3.7 at 3000 points, all
+/// agreeing.
+pub fn triangular_index(p: DVec3) -> usize {
+    const H: f64 = 0.866_025_403_784_438_6; // √3 / 2
+    let band = (p.z / H + EPS).floor();
+    let v = p.z / H - band;
+    let odd = band.rem_euclid(2.0) as i64;
+    let u = p.x - 0.5 * odd as f64 + EPS;
+    let i = u.floor();
+    if (u - (i + 0.5)).abs() <= (1.0 - v) / 2.0 {
+        [0, 4, 2][(i as i64 - odd).rem_euclid(3) as usize]
+    } else {
+        [1, 3, 5][(u.round() as i64 - odd).rem_euclid(3) as usize]
+    }
 }
 
 /// Whether `p` is in the mortar of `brick`: bricks of `size` whose mortar joint
@@ -156,7 +190,11 @@ fn raw(kind: &PatternKind, p: DVec3, m: &PatternMods) -> f64 {
         | PatternKind::Spiral1(_)
         | PatternKind::Spiral2(_)
         | PatternKind::Fractal(_) => super::shapes::raw(kind, p),
-        PatternKind::Checker | PatternKind::Hexagon | PatternKind::Brick { .. } => 0.0,
+        PatternKind::Checker
+        | PatternKind::Hexagon
+        | PatternKind::Square
+        | PatternKind::Triangular
+        | PatternKind::Brick { .. } => 0.0,
         PatternKind::PigmentPattern(pig) => grey(super::evaluate(pig, p)),
         PatternKind::ImagePattern(im) => super::image_map::value_at(im, p),
         PatternKind::DensityFile(g) => g.value(p),
