@@ -209,6 +209,7 @@ impl Evaluator<'_> {
                 form: DVec3::new(-1.0, 1.0, 0.0),
                 metric: 2.0,
                 solid: false,
+                offset: 0.0,
             },
             "agate" => PatternKind::Agate,
             "wrinkles" => PatternKind::Wrinkles,
@@ -337,6 +338,7 @@ impl Evaluator<'_> {
                     form,
                     metric,
                     solid,
+                    offset,
                 }) = &mut spec.kind
                 else {
                     let span = c.last;
@@ -369,16 +371,7 @@ impl Evaluator<'_> {
                         }
                         *metric = m;
                     }
-                    _ => {
-                        let (_, s) = c.value("the offset")?;
-                        return Err(Diagnostic::error(
-                            codes::UNSUPPORTED,
-                            s,
-                            "crackle's `offset` is not implemented in rts yet",
-                        )
-                        .with_help("remove it; the cells are drawn as with offset 0")
-                        .into());
-                    }
+                    _ => *offset = self.take_float(c, "the offset")?,
                 }
             }
             "control0" | "control1" | "exponent" | "exterior" | "interior" | "noise_generator" => {

@@ -265,6 +265,9 @@ pub enum PatternKind {
         metric: f64,
         /// `solid`: each cell one value (of the noise at its point).
         solid: bool,
+        /// `offset O` (default 0): the point lies O off the cell points along a
+        /// fourth dimension, so every distance d becomes `(dᵐ + Oᵐ)^(1/m)`.
+        offset: f64,
     },
     /// `agate`: turbulent sine bands.
     Agate,
