@@ -266,6 +266,8 @@ fn shade_texture(
     let eta_view = n_far / n_near;
 
     let mut out = DVec3::ZERO;
+    // The part of `out` that is the surfaces' reflection (see the end).
+    let mut reflected = DVec3::ZERO;
     let mut through = DVec3::ONE;
     let mut conserve = DVec3::ONE;
     let mut last_n = facing(s.normal);
@@ -423,7 +425,9 @@ fn shade_texture(
                     next_weight,
                     ctx,
                 );
-                layer += amount * reflection_exponent(seen, r.exponent);
+                let part = amount * reflection_exponent(seen, r.exponent);
+                layer += part;
+                reflected += through * part;
             }
         }
         if f.crand > 0.0 {
@@ -455,10 +459,14 @@ fn shade_texture(
     // Total internal reflection returns all the light it reflects, whatever
     // the surface's filter and transmit (measured on POV-Ray 3.7: a clear box
     // with transmit 0.9 shows the light it reflects inside unscaled).
-    let (through, next_weight) = if kind == RayKind::Reflected {
-        (DVec3::ONE, weight)
+    // It also takes the place of the surface's own reflection (measured on
+    // POV-Ray 3.7: seen from inside water of ior 1.3 past the critical angle,
+    // `reflection 0`, 0.3 and 0.6 all show the reflected floor at full
+    // brightness, and the surface's ambient light still adds).
+    let (through, next_weight, out) = if kind == RayKind::Reflected {
+        (DVec3::ONE, weight, (out - reflected).max(DVec3::ZERO))
     } else {
-        (through, next_weight)
+        (through, next_weight, out)
     };
     let next = Onward {
         dir,
