@@ -9,6 +9,13 @@ use glam::{DVec2, DVec3};
 /// Squared modulus past which an orbit has escaped.
 const BAILOUT: f64 = 4.0;
 
+/// The magnet fractals' escape (measured on POV-Ray 3.7 at 400 points of each
+/// `magnet 1|2 mandel 50`, 99% agreeing and the rest in chaotic spots): past a
+/// squared modulus of 10000, or on reaching within 0.01 of their fixed point 1
+/// (squared distance below 1e-4), both counted as escaping.
+const MAGNET_BAILOUT: f64 = 1e4;
+const MAGNET_CONVERGED: f64 = 1e-4;
+
 #[derive(Clone, Copy)]
 struct C(f64, f64);
 
@@ -63,8 +70,17 @@ pub fn value(f: &Fractal, p: DVec3) -> f64 {
             (point, c2(k))
         }
     };
-    let mut least = z.norm2().sqrt();
     let n = f.iterations.max(1);
+    let magnet = !matches!(f.kind, FractalKind::Mandel | FractalKind::Julia(_));
+    // The least modulus of the orbit (interior type 1): for the magnets over
+    // the iterates only (measured: 70 of 74 interior points of `magnet 1
+    // mandel 30 interior 1, 1` agree, where the start z = 0 would give 0).
+    let mut least = if magnet {
+        f64::INFINITY
+    } else {
+        z.norm2().sqrt()
+    };
+    let bailout = if magnet { MAGNET_BAILOUT } else { BAILOUT };
     for i in 0..n {
         z = match f.kind {
             FractalKind::Mandel | FractalKind::Julia(_) => z.powi(f.exponent.max(2)).add(c),
@@ -87,7 +103,7 @@ pub fn value(f: &Fractal, p: DVec3) -> f64 {
             }
         };
         let m = z.norm2();
-        if m > BAILOUT || !m.is_finite() {
+        if m > bailout || !m.is_finite() || (magnet && z.sub(one).norm2() < MAGNET_CONVERGED) {
             return outcome(f.exterior, z, f64::from(i) / f64::from(n), least);
         }
         least = least.min(m.sqrt());
@@ -136,5 +152,32 @@ mod tests {
         // c = 2: 2 → 6 escapes at the first iteration (count 0); c = 1 at the second.
         assert_eq!(value(&mandel(), DVec3::new(2.0, 0.0, 0.0)), 0.0);
         assert!((value(&mandel(), DVec3::new(1.0, 0.0, 0.0)) - 1.0 / 20.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn magnets_escape_as_povray_s() {
+        // `magnet 1|2 mandel 50` sampled in POV-Ray 3.7 (function pigment).
+        let magnet = |kind| Fractal {
+            kind,
+            iterations: 50,
+            ..mandel()
+        };
+        for (x, y, one, two) in [
+            (-2.0, -2.0, 0.04, 0.02),
+            (1.09017, 1.019511, 1.0, 1.0),
+            (-0.81966, 0.039021, 0.08, 0.04),
+            (2.27051, -0.941468, 0.12, 0.06),
+            (0.36068, -1.921957, 0.18, 0.04),
+        ] {
+            let p = DVec3::new(x, y, 0.0);
+            assert!(
+                (value(&magnet(FractalKind::Magnet1Mandel), p) - one).abs() < 1e-9,
+                "{x} {y}"
+            );
+            assert!(
+                (value(&magnet(FractalKind::Magnet2Mandel), p) - two).abs() < 1e-9,
+                "{x} {y}"
+            );
+        }
     }
 }
