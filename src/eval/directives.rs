@@ -31,6 +31,9 @@ impl Evaluator<'_> {
                 }
                 let v = match value {
                     Rhs::Block(b) if b.keyword.name == "function" && target.indices.is_empty() => {
+                        if self.foreign_internal(b, target.name) {
+                            return Ok(());
+                        }
                         let outer = self.declaring_function.replace(target.name);
                         let v = self.block_value(b);
                         self.declaring_function = outer;

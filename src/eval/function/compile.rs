@@ -232,6 +232,30 @@ impl Evaluator<'_> {
         }
     }
 
+    /// Whether `#declare NAME = function { internal(NUMBER) }` is POV-Ray's own
+    /// functions.inc declaring one of its built-ins that rts does not have (an
+    /// `f_` name, as [`super::super::items::pov_function`] reads them): the
+    /// declaration is then left out, so POV-Ray's include file can be read and a
+    /// use of that name says rts lacks it.
+    pub(crate) fn foreign_internal(&mut self, b: &Block, name: Sym) -> bool {
+        let items: Vec<&Item> = b
+            .items
+            .iter()
+            .filter(|i| !matches!(i, Item::Semicolon(_)))
+            .collect();
+        let [Item::Keyword(k), Item::Expr(e)] = items.as_slice() else {
+            return false;
+        };
+        let n = name.name();
+        let pov_name = n
+            .strip_prefix("f_")
+            .is_some_and(|r| r.starts_with(|c: char| c.is_ascii_lowercase()));
+        k.name == "internal"
+            && pov_name
+            && !super::internal::INTERNALS.iter().any(|(m, _, _)| *m == &*n)
+            && matches!(self.expr(e), Ok(Value::Float(_)))
+    }
+
     /// `function(x, y, z, …) { internal("f_name") }`: a built-in of functions.inc
     /// (`arity`: the number of parameters declared, if any; without a list the
     /// built-in's own count). POV-Ray's own form, `#declare f_name = function {
