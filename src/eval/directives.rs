@@ -185,7 +185,18 @@ impl Evaluator<'_> {
             }
             DirectiveKind::Macro(m) => {
                 if m.name.is_builtin() {
-                    return Err(self.reserved(m.name_span, &m.name.name()));
+                    // POV-Ray's own transforms.inc writes `vtransform` and
+                    // `vinv_transform` as macros; rts has them built in, doing
+                    // the same, so that file's definitions are left out.
+                    let name = m.name.name();
+                    let file = &self.sources.get(m.name_span.file).name;
+                    let povray_include = std::path::Path::new(&**file)
+                        .file_name()
+                        .is_some_and(|f| f == "transforms.inc");
+                    if povray_include && matches!(&*name, "vtransform" | "vinv_transform") {
+                        return Ok(());
+                    }
+                    return Err(self.reserved(m.name_span, &name));
                 }
                 for (i, p) in m.params.iter().enumerate() {
                     if let Some(first) = m.params[..i].iter().find(|q| q.name == p.name) {
