@@ -370,7 +370,8 @@ impl Evaluator<'_> {
                 "`up` marks the middle of the arc: give a vector across the direction, e.g. `up y`",
             );
         }
-        rb.up = rb.up.normalize();
+        // Made perpendicular to the direction here, once, as the scene type says.
+        rb.up = rb.direction.cross(rb.up.cross(rb.direction)).normalize();
         if rb.falloff_angle > rb.arc_angle {
             return fail(
                 spans.2,

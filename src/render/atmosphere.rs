@@ -108,9 +108,9 @@ fn rainbow_colour(rb: &Rainbow, dir: DVec3) -> Option<crate::scene::Colour> {
     }
     let mut c = pigment::colour_at(&rb.colour_map, index);
     if rb.falloff_angle < 360.0 {
-        let right = rb.up.cross(rb.direction).normalize();
-        let up = rb.direction.cross(right);
-        let phi = dir.dot(right).abs().atan2(dir.dot(up)).to_degrees();
+        // `up` and `direction` are perpendicular unit vectors (see `Rainbow`).
+        let right = rb.up.cross(rb.direction);
+        let phi = dir.dot(right).abs().atan2(dir.dot(rb.up)).to_degrees();
         let (half_arc, half_full) = (rb.arc_angle / 2.0, rb.falloff_angle / 2.0);
         if phi > half_arc {
             return None;
@@ -228,14 +228,16 @@ mod tests {
     }
 
     fn rainbow(direction: DVec3, colour: Colour) -> Rainbow {
+        let direction = direction.normalize();
         Rainbow {
-            direction: direction.normalize(),
+            direction,
             angle: 20.0,
             width: 60.0,
             distance: 1e7,
             jitter: 0.0,
             colour_map: std::sync::Arc::new(vec![(0.0, colour), (1.0, colour)]),
-            up: DVec3::Y,
+            // y made perpendicular to the direction, as evaluation does.
+            up: direction.cross(DVec3::Y.cross(direction)).normalize(),
             arc_angle: 360.0,
             falloff_angle: 360.0,
         }
