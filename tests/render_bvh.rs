@@ -7,7 +7,7 @@ use glam::DVec3;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 use render_support::*;
-use rts::build::{build, Ray, RayKind, World};
+use rts::build::{build, Aabb, Bvh, Ray, RayKind, World};
 use rts::scene::{Camera, CsgOp, MeshData, Object, Shape, Transform};
 
 fn config(cases: u32) -> Config {
@@ -178,6 +178,35 @@ proptest! {
                 prop_assert!(s.geo_normal.is_finite() && s.normal.is_finite());
                 prop_assert!((s.geo_normal.length() - 1.0).abs() < 1e-6);
             }
+        }
+    }
+
+    /// The path tracer's flat list of boxes ([`Bvh::flat`], both its small and
+    /// its large key arrays) finds the same nearest hits and blockers as testing
+    /// every primitive, rays starting inside the scene included.
+    #[test]
+    fn flat_list_hit_equals_brute_force(
+        objects in prop::collection::vec(shape_object(), 1..80),
+        rays in prop::collection::vec((v3(15.0), unit()), 32),
+    ) {
+        let w = world(objects);
+        let items: Vec<(u32, Aabb)> = w
+            .primitives
+            .iter()
+            .enumerate()
+            .filter_map(|(i, p)| Some((i as u32, p.bounds?)))
+            .collect();
+        let Some(flat) = Bvh::flat(&items) else {
+            prop_assert!(items.is_empty());
+            return Ok(());
+        };
+        for (o, d) in rays {
+            let ray = Ray::new(o, d);
+            let fast = w.intersect_among(&flat, &ray, 0.0, f64::INFINITY, RayKind::Camera);
+            let slow = w.intersect_brute_force(&ray, 0.0, f64::INFINITY, RayKind::Camera);
+            prop_assert_eq!(fast.map(|h| h.t), slow.map(|h| h.t));
+            let occluded = w.occluded_among(&flat, &ray, 0.0, 20.0);
+            prop_assert_eq!(occluded, slow.is_some_and(|h| h.t < 20.0));
         }
     }
 

@@ -731,6 +731,19 @@ impl World {
 
     /// The nearest hit in `(t_min, t_max)` among primitives `kind` can see.
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64, kind: RayKind) -> Option<Hit> {
+        self.intersect_among(&self.bvh, ray, t_min, t_max, kind)
+    }
+
+    /// [`World::intersect`] with `bvh` (over this world's bounded primitives,
+    /// such as a [`Bvh::flat`] list) in place of the world's own hierarchy.
+    pub fn intersect_among(
+        &self,
+        bvh: &Bvh,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        kind: RayKind,
+    ) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let mut t_max = t_max;
         let found = |i: u32, (t, leaf, sub): ShapeHit| Hit {
@@ -748,7 +761,7 @@ impl World {
                 }
             }
         }
-        self.bvh.traverse(ray, t_min, t_max, |i, t_max| {
+        bvh.traverse(ray, t_min, t_max, |i, t_max| {
             let p = &self.primitives[i as usize];
             if kind.sees(&p.flags) {
                 if let Some(h) = p.intersect(ray, t_min, t_max) {
@@ -763,6 +776,12 @@ impl World {
 
     /// Whether any shadow-casting primitive lies on `ray` within `(t_min, t_max)`.
     pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        self.occluded_among(&self.bvh, ray, t_min, t_max)
+    }
+
+    /// [`World::occluded`] with `bvh` in place of the world's own hierarchy (see
+    /// [`World::intersect_among`]).
+    pub fn occluded_among(&self, bvh: &Bvh, ray: &Ray, t_min: f64, t_max: f64) -> bool {
         let kind = RayKind::Shadow;
         let hit_by = |i: u32| {
             let p = &self.primitives[i as usize];
@@ -772,7 +791,7 @@ impl World {
             return true;
         }
         let mut found = false;
-        self.bvh.traverse(ray, t_min, t_max, |i, t_max| {
+        bvh.traverse(ray, t_min, t_max, |i, t_max| {
             found = hit_by(i);
             (!found).then_some(t_max)
         });

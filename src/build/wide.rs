@@ -6,6 +6,7 @@
 
 use glam::Vec4;
 
+use super::bvh::FLAT_MAX;
 use super::Ray;
 
 /// The box of an empty lane: all at +∞, so a ray enters it at +∞ or leaves it at
@@ -200,6 +201,90 @@ pub(super) fn traverse(
                     None => return,
                 }
             }
+        }
+    }
+}
+
+/// Visits the primitives of the flat list `chunks` (see [`super::Bvh::flat`]:
+/// each lane's child a primitive) whose boxes `ray` enters within
+/// `t_min..t_max`, nearest entry first, as [`traverse`] does. (A ray leaving a
+/// flat surface enters that surface's own thin box by the test's rounding
+/// margin, so its primitive is tested too and rejects the ray: testing such
+/// boxes again in f64 first measured slower.)
+#[inline(always)]
+pub(super) fn traverse_flat(
+    chunks: &[Wide],
+    ray: &Ray,
+    t_min: f64,
+    t_max: f64,
+    visit: impl FnMut(u32, f64) -> Option<f64>,
+) {
+    // Room for every lane's key without a heap: small lists (the usual case)
+    // set up a small array.
+    if chunks.len() * 4 <= FLAT_SMALL {
+        walk_flat::<FLAT_SMALL>(chunks, ray, t_min, t_max, visit);
+    } else {
+        walk_flat::<FLAT_MAX>(chunks, ray, t_min, t_max, visit);
+    }
+}
+
+/// Lists of up to this many boxes keep their keys in a small array.
+const FLAT_SMALL: usize = 32;
+
+/// [`traverse_flat`] for lists of at most `N` boxes.
+#[inline(always)]
+fn walk_flat<const N: usize>(
+    chunks: &[Wide],
+    ray: &Ray,
+    t_min: f64,
+    t_max: f64,
+    visit: impl FnMut(u32, f64) -> Option<f64>,
+) {
+    let lanes = Lanes::new(ray);
+    let near = Vec4::splat(down(t_min));
+    let limit = Vec4::splat(far(t_max));
+    // The entered lanes as keys (entry distance's bits above the primitive),
+    // kept sorted by insertion: a ray enters few of the boxes.
+    let mut keys = [0u64; N];
+    let mut n = 0;
+    for c in chunks {
+        let (mask, dist) = lanes.hit(c, near, limit);
+        if mask == 0 {
+            continue;
+        }
+        let d = dist.to_array();
+        for (lane, d) in d.iter().enumerate() {
+            if mask & (1 << lane) != 0 {
+                let key = (u64::from(d.to_bits()) << 32) | u64::from(c.child[lane]);
+                let mut j = n;
+                while j > 0 && keys[j - 1] > key {
+                    keys[j] = keys[j - 1];
+                    j -= 1;
+                }
+                keys[j] = key;
+                n += 1;
+            }
+        }
+    }
+    visit_sorted(&keys[..n], t_max, visit);
+}
+
+/// Visits the primitives of sorted `keys` (see [`traverse_flat`]) while their
+/// boxes are entered before the nearest hit so far.
+#[inline(always)]
+fn visit_sorted(keys: &[u64], mut t_max: f64, mut visit: impl FnMut(u32, f64) -> Option<f64>) {
+    let mut far32 = far(t_max);
+    for &key in keys {
+        if key_dist(key) > far32 {
+            return;
+        }
+        match visit(key as u32, t_max) {
+            Some(t) if t < t_max => {
+                t_max = t;
+                far32 = far(t);
+            }
+            Some(_) => {}
+            None => return,
         }
     }
 }

@@ -7,7 +7,7 @@ use super::bsdf::{Bsdf, Material};
 use super::emitters::Emitters;
 use super::environment::Environment;
 use super::lights;
-use crate::build::{PrimShape, Ray, RayKind, World};
+use crate::build::{Aabb, Bvh, Hit, PrimShape, Ray, RayKind, World};
 use crate::render::{sky, RayStats, Sampler};
 use glam::DVec3;
 
@@ -32,6 +32,10 @@ pub struct PathScene<'a> {
     /// Per primitive: the unit normal of a triangle kept in world space (as
     /// [`World::surface`] computes it), so its hits skip that query.
     pub flat_normals: Vec<Option<DVec3>>,
+    /// The world's bounded primitives as a [`Bvh::flat`] list, which this
+    /// renderer's scattered rays walk faster than the world's tree when the
+    /// world is small enough for one (else `None`: the tree).
+    pub flat: Option<Bvh>,
 }
 
 impl<'a> PathScene<'a> {
@@ -61,7 +65,14 @@ impl<'a> PathScene<'a> {
                 _ => None,
             })
             .collect();
+        let bounded: Vec<(u32, Aabb)> = world
+            .primitives
+            .iter()
+            .enumerate()
+            .filter_map(|(i, p)| Some((i as u32, p.bounds?)))
+            .collect();
         PathScene {
+            flat: Bvh::flat(&bounded),
             world,
             emitters,
             materials,
@@ -70,6 +81,24 @@ impl<'a> PathScene<'a> {
             clear: world.transparent,
             env: Environment::new(world),
         }
+    }
+}
+
+impl PathScene<'_> {
+    /// The nearest hit in `(t_min, t_max)` among primitives `kind` can see
+    /// ([`World::intersect`], through [`PathScene::flat`] when there is one).
+    #[inline]
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64, kind: RayKind) -> Option<Hit> {
+        let bvh = self.flat.as_ref().unwrap_or(&self.world.bvh);
+        self.world.intersect_among(bvh, ray, t_min, t_max, kind)
+    }
+
+    /// Whether a shadow-casting primitive lies on `ray` within `(t_min, t_max)`
+    /// ([`World::occluded`], through [`PathScene::flat`] when there is one).
+    #[inline]
+    pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        let bvh = self.flat.as_ref().unwrap_or(&self.world.bvh);
+        self.world.occluded_among(bvh, ray, t_min, t_max)
     }
 }
 
@@ -115,7 +144,7 @@ pub fn radiance(
     let mut prev_p = ray.origin;
     let mut first = true;
     loop {
-        let Some(hit) = world.intersect(&ray, t_min, f64::INFINITY, kind) else {
+        let Some(hit) = sc.intersect(&ray, t_min, f64::INFINITY, kind) else {
             let env = sky(world, ray.dir);
             let w = match &sc.env {
                 Some(e) if !prev_delta => power(prev_pdf, e.pdf(ray.dir)),
@@ -230,15 +259,7 @@ pub fn radiance(
                 let vis = if light.shadowless {
                     DVec3::ONE
                 } else {
-                    lights::transmittance(
-                        world,
-                        sc.clear,
-                        p,
-                        geo_normal,
-                        ls.wi,
-                        ls.dist,
-                        &mut stats.shadow,
-                    )
+                    lights::transmittance(sc, p, geo_normal, ls.wi, ls.dist, &mut stats.shadow)
                 };
                 out.radiance += beta * f * ls.li * vis;
             }
@@ -247,8 +268,7 @@ pub fn radiance(
                 let (f, pdf_b) = bsdf.eval(wo, wi);
                 if f.max_element() > 0.0 && pdf_e > 0.0 {
                     let vis = lights::transmittance(
-                        world,
-                        sc.clear,
+                        sc,
                         p,
                         geo_normal,
                         wi,
@@ -277,8 +297,7 @@ pub fn radiance(
                             // Stop short of the emitter so it does not hide itself.
                             let reach = dist * (1.0 - 1e-7) - crate::build::surface_offset(ep.p);
                             let vis = lights::transmittance(
-                                world,
-                                sc.clear,
+                                sc,
                                 p,
                                 geo_normal,
                                 wi,

@@ -7,7 +7,8 @@
 
 use super::super::lights::{cylinder_attenuation, fade, oriented_axes, spot_attenuation};
 use super::super::sampler::concentric_disc;
-use crate::build::{surface_offset, Ray, RayKind, World};
+use super::integrator::PathScene;
+use crate::build::{surface_offset, Ray, RayKind};
 use crate::scene::{Light, LightKind};
 use glam::DVec3;
 use std::f64::consts::PI;
@@ -92,12 +93,11 @@ pub fn sample(light: &Light, p: DVec3, u: (f64, f64)) -> Option<LightSample> {
 /// How much light passes from `p` (geometric normal `geo_n`) along unit `wi` for
 /// `dist`: 1 on a clear path, 0 behind an opaque or refracting surface, and the
 /// product of `filter · colour + transmit` of the `ior 1` transparent surfaces
-/// crossed (those the path tracer also passes straight through); `clear`: whether
-/// the world has any such surface ([`World::transparent`]). `shadow_rays` counts the
-/// rays traced.
+/// crossed (those the path tracer also passes straight through; looked for only
+/// when the world has any such surface, [`crate::build::World::transparent`]).
+/// `shadow_rays` counts the rays traced.
 pub fn transmittance(
-    world: &World,
-    clear: bool,
+    sc: &PathScene,
     p: DVec3,
     geo_n: DVec3,
     wi: DVec3,
@@ -110,16 +110,17 @@ pub fn transmittance(
         return DVec3::ONE;
     }
     *shadow_rays += 1;
-    if !world.occluded(&ray, eps, t_max) {
+    if !sc.occluded(&ray, eps, t_max) {
         return DVec3::ONE;
     }
-    if !clear {
+    let world = sc.world;
+    if !sc.clear {
         return DVec3::ZERO;
     }
     let mut through = DVec3::ONE;
     let mut t0 = eps;
     for _ in 0..64 {
-        let Some(hit) = world.intersect(&ray, t0, t_max, RayKind::Shadow) else {
+        let Some(hit) = sc.intersect(&ray, t0, t_max, RayKind::Shadow) else {
             return through;
         };
         let s = world.surface(&ray, &hit);
