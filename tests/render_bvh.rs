@@ -7,7 +7,7 @@ use glam::DVec3;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 use render_support::*;
-use rts::build::{build, Aabb, Bvh, Ray, RayKind, World};
+use rts::build::{build, Ray, RayKind, World};
 use rts::scene::{Camera, CsgOp, MeshData, Object, Shape, Transform};
 
 fn config(cases: u32) -> Config {
@@ -181,7 +181,7 @@ proptest! {
         }
     }
 
-    /// The path tracer's flat list of boxes ([`Bvh::flat`], both its small and
+    /// The path tracer's flat list of boxes (`Bvh::flat`, both its small and
     /// its large key arrays) finds the same nearest hits and blockers as testing
     /// every primitive, rays starting inside the scene included.
     #[test]
@@ -190,14 +190,8 @@ proptest! {
         rays in prop::collection::vec((v3(15.0), unit()), 32),
     ) {
         let w = world(objects);
-        let items: Vec<(u32, Aabb)> = w
-            .primitives
-            .iter()
-            .enumerate()
-            .filter_map(|(i, p)| Some((i as u32, p.bounds?)))
-            .collect();
-        let Some(flat) = Bvh::flat(&items) else {
-            prop_assert!(items.is_empty());
+        let Some(flat) = w.flat_bvh() else {
+            prop_assert!(w.primitives.iter().all(|p| p.bounds.is_none()));
             return Ok(());
         };
         for (o, d) in rays {

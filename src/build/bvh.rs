@@ -114,7 +114,8 @@ impl Node {
 /// large mesh's (up to four triangles a leaf) as a 4-wide tree in f32 lanes,
 /// with half the nodes and memory. Measured: the wide walk is 8-10% faster on a
 /// 1M-triangle mesh, and 5-8% slower on the world trees of the sphere and CSG
-/// comparison scenes.
+/// comparison scenes. The path tracer walks small worlds with no tree at all
+/// ([`Bvh::flat`]).
 #[derive(Clone, Debug, Default)]
 pub struct Bvh {
     /// A mesh's tree collapsed to 4-wide nodes, root first (else empty).

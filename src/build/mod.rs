@@ -734,6 +734,18 @@ impl World {
         self.intersect_among(&self.bvh, ray, t_min, t_max, kind)
     }
 
+    /// This world's bounded primitives as a [`Bvh::flat`] list (`None` when
+    /// there are none or too many), for [`World::intersect_among`].
+    pub fn flat_bvh(&self) -> Option<Bvh> {
+        let items: Vec<(u32, Aabb)> = self
+            .primitives
+            .iter()
+            .enumerate()
+            .filter_map(|(i, p)| p.bounds.map(|b| (i as u32, b)))
+            .collect();
+        Bvh::flat(&items)
+    }
+
     /// [`World::intersect`] with `bvh` (over this world's bounded primitives,
     /// such as a [`Bvh::flat`] list) in place of the world's own hierarchy.
     pub fn intersect_among(

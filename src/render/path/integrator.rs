@@ -7,7 +7,7 @@ use super::bsdf::{Bsdf, Material};
 use super::emitters::Emitters;
 use super::environment::Environment;
 use super::lights;
-use crate::build::{Aabb, Bvh, Hit, PrimShape, Ray, RayKind, World};
+use crate::build::{Bvh, Hit, PrimShape, Ray, RayKind, World};
 use crate::render::{sky, RayStats, Sampler};
 use glam::DVec3;
 
@@ -65,14 +65,8 @@ impl<'a> PathScene<'a> {
                 _ => None,
             })
             .collect();
-        let bounded: Vec<(u32, Aabb)> = world
-            .primitives
-            .iter()
-            .enumerate()
-            .filter_map(|(i, p)| Some((i as u32, p.bounds?)))
-            .collect();
         PathScene {
-            flat: Bvh::flat(&bounded),
+            flat: world.flat_bvh(),
             world,
             emitters,
             materials,
