@@ -9,6 +9,8 @@ mod manifest;
 mod path_opts;
 mod render;
 mod sequence;
+#[allow(dead_code)] // used by the budget flags landing next
+mod size;
 mod stats;
 mod watch;
 
