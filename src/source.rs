@@ -43,6 +43,15 @@ impl SourceFile {
         (line + 1, col + 1)
     }
 
+    /// Byte offset where 0-based `line` starts; the text's length past the last
+    /// line.
+    pub fn line_start(&self, line: usize) -> usize {
+        self.line_starts
+            .get(line)
+            .copied()
+            .unwrap_or(self.text.len())
+    }
+
     /// The directory relative includes are resolved against.
     pub fn dir(&self) -> Option<&Path> {
         // `Path::new("a.rts").parent()` is `""`: that is the current folder.

@@ -2,6 +2,7 @@
 //! ([`render::human`]), one line per error ([`render::short`]) or JSON ([`render::json`]).
 
 pub mod codes;
+mod excerpt;
 pub mod render;
 mod suggest;
 

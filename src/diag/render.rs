@@ -1,23 +1,25 @@
 //! The three renderings of a [`Diagnostic`]: a miette report for people, one line for
 //! tools (`short`), and one JSON object per line (`json`).
 
+use super::excerpt::{visible, Excerpt};
 use super::{Diagnostic, Label, Severity};
 use crate::source::SourceMap;
 use crate::span::Span;
-use miette::{GraphicalReportHandler, GraphicalTheme, LabeledSpan, NamedSource};
+use miette::{GraphicalReportHandler, GraphicalTheme, LabeledSpan};
 use std::fmt;
 
 /// `FILE:LINE:COL: error[CODE]: MESSAGE`, plus ` (help: …)` when there is help.
 pub fn short(diag: &Diagnostic, sources: &SourceMap) -> String {
     let (file, line, col) = position(sources, diag.span.start as usize, diag.span);
     let mut out = format!(
-        "{file}:{line}:{col}: {}[{}]: {}",
+        "{}:{line}:{col}: {}[{}]: {}",
+        visible(&file),
         diag.severity.as_str(),
         diag.code,
-        diag.message
+        visible(&diag.message)
     );
     if let Some(help) = &diag.help {
-        out.push_str(&format!(" (help: {help})"));
+        out.push_str(&format!(" (help: {})", visible(help)));
     }
     out
 }
@@ -101,7 +103,7 @@ struct Report {
     code: Option<String>,
     severity: miette::Severity,
     help: Option<String>,
-    source: NamedSource<String>,
+    source: Excerpt,
     labels: Vec<LabeledSpan>,
     related: Vec<Report>,
 }
@@ -109,28 +111,38 @@ struct Report {
 impl Report {
     fn from_diag(diag: &Diagnostic, sources: &SourceMap) -> Report {
         let file = sources.get(diag.span.file);
+        let here: Vec<(usize, usize)> = std::iter::once(diag.span)
+            .chain(
+                diag.labels
+                    .iter()
+                    .map(|l| l.span)
+                    .filter(|s| s.file == diag.span.file),
+            )
+            .map(|s| (s.start as usize, s.end as usize))
+            .collect();
+        let source = Excerpt::new(file, &here);
         let mut labels = vec![LabeledSpan::new_primary_with_span(
-            diag.label.clone(),
-            miette_span(diag.span),
+            diag.label.as_deref().map(|l| visible(l).into_owned()),
+            miette_span(&source, diag.span),
         )];
         let mut related = Vec::new();
         for l in &diag.labels {
             if l.span.file == diag.span.file {
                 labels.push(LabeledSpan::new_with_span(
-                    Some(l.message.clone()),
-                    miette_span(l.span),
+                    Some(visible(&l.message).into_owned()),
+                    miette_span(&source, l.span),
                 ));
             } else {
                 related.push(Report::note(l, sources));
             }
         }
         related.extend(diag.trace.iter().map(|t| Report::note(t, sources)));
-        let mut help = diag.help.clone();
+        let mut help = diag.help.as_deref().map(|h| visible(h).into_owned());
         if !diag.notes.is_empty() {
             let notes = diag
                 .notes
                 .iter()
-                .map(|n| format!("note: {n}"))
+                .map(|n| format!("note: {}", visible(n)))
                 .collect::<Vec<_>>()
                 .join("\n");
             help = Some(match help {
@@ -139,7 +151,7 @@ impl Report {
             });
         }
         Report {
-            message: diag.message.clone(),
+            message: visible(&diag.message).into_owned(),
             code: Some(diag.code.to_string()),
             severity: match diag.severity {
                 Severity::Error => miette::Severity::Error,
@@ -147,7 +159,7 @@ impl Report {
                 Severity::Note => miette::Severity::Advice,
             },
             help,
-            source: NamedSource::new(file.name.clone(), file.text.clone()),
+            source,
             labels,
             related,
         }
@@ -155,23 +167,27 @@ impl Report {
 
     fn note(label: &Label, sources: &SourceMap) -> Report {
         let file = sources.get(label.span.file);
+        let source = Excerpt::new(
+            file,
+            &[(label.span.start as usize, label.span.end as usize)],
+        );
         Report {
-            message: label.message.clone(),
+            message: visible(&label.message).into_owned(),
             code: None,
             severity: miette::Severity::Advice,
             help: None,
-            source: NamedSource::new(file.name.clone(), file.text.clone()),
             labels: vec![LabeledSpan::new_primary_with_span(
                 None,
-                miette_span(label.span),
+                miette_span(&source, label.span),
             )],
+            source,
             related: Vec::new(),
         }
     }
 }
 
-fn miette_span(span: Span) -> miette::SourceSpan {
-    (span.start as usize, span.len()).into()
+fn miette_span(source: &Excerpt, span: Span) -> miette::SourceSpan {
+    source.span(span.start as usize, span.end as usize)
 }
 
 impl fmt::Display for Report {
