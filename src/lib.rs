@@ -7,6 +7,7 @@ pub mod build;
 pub mod diag;
 pub mod eval;
 pub mod ide;
+pub mod memory;
 pub mod output;
 pub mod render;
 pub mod scene;

@@ -19,9 +19,14 @@ fn main() {
             std::process::exit(code);
         }
     };
+    // Render threads get the main thread's stack (deeply nested scenes recurse
+    // there too); the global pool is built once, here.
+    let _ = rayon::ThreadPoolBuilder::new()
+        .stack_size(cli::STACK_SIZE)
+        .build_global();
     let worker = std::thread::Builder::new()
         .name("rts".into())
-        .stack_size(512 << 20)
+        .stack_size(cli::STACK_SIZE)
         .spawn(move || cli::run(cli));
     let code = match worker.map(std::thread::JoinHandle::join) {
         Ok(Ok(code)) => code,

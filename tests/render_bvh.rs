@@ -97,7 +97,7 @@ fn any_object() -> impl Strategy<Value = Object> {
         ),
         1 => (0usize..3, prop::collection::vec(convex_object(), 2..4)).prop_map(|(k, children)| {
             let op = [CsgOp::Merge, CsgOp::Intersection, CsgOp::Difference][k];
-            object(Shape::Csg { op, children })
+            object(Shape::Csg { op, children: children.into() })
         }),
         1 => (convex_object(), convex_object()).prop_map(|(mut o, clip)| {
             o.clipped_by = Some(std::sync::Arc::new(vec![clip]));
@@ -280,15 +280,15 @@ fn csg_hits_and_inside_follow_pov_rules() {
     let b = sphere(DVec3::X, 1.0);
     let diff = object(Shape::Csg {
         op: CsgOp::Difference,
-        children: vec![a.clone(), b.clone()],
+        children: vec![a.clone(), b.clone()].into(),
     });
     let inter = object(Shape::Csg {
         op: CsgOp::Intersection,
-        children: vec![a.clone(), b.clone()],
+        children: vec![a.clone(), b.clone()].into(),
     });
     let merge = object(Shape::Csg {
         op: CsgOp::Merge,
-        children: vec![a, b],
+        children: vec![a, b].into(),
     });
     let along_x = Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
     let hits = |o: &Object| {
@@ -346,7 +346,7 @@ fn mesh_instances_share_triangles() {
 
 fn union_of(obj: Object) -> Object {
     let mut u = object(rts::scene::Shape::Union {
-        children: vec![obj],
+        children: vec![obj].into(),
     });
     u.transform = None;
     u

@@ -131,7 +131,8 @@ pub fn compare_scene() -> Scene {
                     ),
                     texture(DVec3::new(1.0, 0.0, 1.0), Finish::default()),
                 ),
-            ],
+            ]
+            .into(),
         })
     };
     let mut ghost = with_texture(

@@ -345,48 +345,65 @@ impl Builder {
     }
 
     /// Appends the primitives of `obj`, whose parent maps to world by `parent`.
+    /// Unions are walked with a stack of their own, not by recursion, in file
+    /// order.
     fn flatten(&mut self, obj: &Object, parent: Option<&Transform>, inh: &Inherited) {
-        let (world_from_obj, here) = Builder::here(obj, parent, inh);
-        if obj.clipped_by.is_some() || matches!(obj.shape, Shape::Csg { .. }) {
-            let mut leaves = Vec::new();
-            // The object's own inverse is in `here.flags`; the tree takes it.
-            let inner = Inherited {
-                flags: ObjectFlags {
-                    inverse: false,
-                    ..here.flags
-                },
-                ..here.clone()
-            };
-            let mut own = obj.clone();
-            own.flags.inverse = false;
-            let mut root = self.csg_node(&own, parent, inh, &mut leaves);
-            if here.flags.inverse {
-                root.invert(&mut leaves);
+        let mut todo: Vec<(&Object, Option<Transform>, Inherited)> =
+            vec![(obj, parent.copied(), inh.clone())];
+        while let Some((obj, parent, inh)) = todo.pop() {
+            let (world_from_obj, here) = Builder::here(obj, parent.as_ref(), &inh);
+            if obj.clipped_by.is_some() || matches!(obj.shape, Shape::Csg { .. }) {
+                self.flatten_csg(obj, parent.as_ref(), &inh, &here);
+                continue;
             }
-            let csg = Csg::new(leaves, root);
-            let shape = PrimShape::Csg(Arc::new(csg));
-            let mut p = primitive(shape, None, &inner);
-            p.flags.inverse = false;
-            if p.bounds.is_some_and(|b| b.is_empty()) {
-                return; // an intersection of disjoint parts: nothing to see
+            if let Shape::Union { children } = &obj.shape {
+                for c in children.iter().rev() {
+                    todo.push((c, world_from_obj, here.clone()));
+                }
+                continue;
             }
-            self.prims.push(p);
-            return;
+            if let Shape::Text(text) = &obj.shape {
+                for (shape, transform) in self.glyphs(text, world_from_obj.as_ref()) {
+                    self.prims.push(primitive(shape, transform, &here));
+                }
+                continue;
+            }
+            let (shape, transform) = self.leaf_shape(&obj.shape, world_from_obj);
+            self.prims.push(primitive(shape, transform, &here));
         }
-        if let Shape::Union { children } = &obj.shape {
-            for c in children {
-                self.flatten(c, world_from_obj.as_ref(), &here);
-            }
-            return;
+    }
+
+    /// Appends `obj`, a CSG object or a clipped one, as one CSG primitive.
+    fn flatten_csg(
+        &mut self,
+        obj: &Object,
+        parent: Option<&Transform>,
+        inh: &Inherited,
+        here: &Inherited,
+    ) {
+        let mut leaves = Vec::new();
+        // The object's own inverse is in `here.flags`; the tree takes it.
+        let inner = Inherited {
+            flags: ObjectFlags {
+                inverse: false,
+                ..here.flags
+            },
+            ..here.clone()
+        };
+        let mut own = obj.clone();
+        own.flags.inverse = false;
+        let mut root = self.csg_node(&own, parent, inh, &mut leaves);
+        if here.flags.inverse {
+            root.invert(&mut leaves);
         }
-        if let Shape::Text(text) = &obj.shape {
-            for (shape, transform) in self.glyphs(text, world_from_obj.as_ref()) {
-                self.prims.push(primitive(shape, transform, &here));
-            }
-            return;
+        let csg = Csg::new(leaves, root);
+        let shape = PrimShape::Csg(Arc::new(csg));
+        let mut p = primitive(shape, None, &inner);
+        p.flags.inverse = false;
+        if p.bounds.is_some_and(|b| b.is_empty()) {
+            return; // an intersection of disjoint parts: nothing to see
         }
-        let (shape, transform) = self.leaf_shape(&obj.shape, world_from_obj);
-        self.prims.push(primitive(shape, transform, &here));
+        self.prims.push(p);
     }
 
     /// The CSG node for `obj` under a parent at `parent` (`inverse` is handled in
@@ -999,14 +1016,14 @@ mod tests {
             max: DVec3::ONE,
         });
         let mut inner = obj(Shape::Union {
-            children: vec![child, plain],
+            children: vec![child, plain].into(),
         });
         inner.flags.no_shadow = true;
         let outer = Object {
             transform: Some(Arc::new(Transform::translate(DVec3::Y * 10.0))),
             texture: Some(red()),
             ..obj(Shape::Union {
-                children: vec![inner],
+                children: vec![inner].into(),
             })
         };
         let untextured = obj(Shape::Plane {
@@ -1092,7 +1109,8 @@ mod tests {
                     transform: Some(Arc::new(place)),
                     ..obj(text.clone())
                 },
-            ],
+            ]
+            .into(),
         });
         let w = build(&Scene {
             objects: vec![carved],

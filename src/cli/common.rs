@@ -48,6 +48,13 @@ pub fn eval_options(args: &SceneArgs, width: u32, height: u32) -> Result<EvalOpt
         max_loop_iterations: args.max_loop_iterations,
         max_macro_depth: args.max_macro_depth,
         max_array_size: args.max_array_size,
+        max_object_depth: args.max_object_depth,
+        max_memory: args
+            .max_memory
+            .unwrap_or_else(rts::memory::default_eval_budget),
+        max_macro_calls: args.max_macro_calls,
+        max_string_length: usize::try_from(args.max_string_length).unwrap_or(usize::MAX),
+        max_errors: args.max_errors.max(1),
         ..EvalOptions::default()
     })
 }

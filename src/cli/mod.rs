@@ -9,13 +9,26 @@ mod manifest;
 mod path_opts;
 mod render;
 mod sequence;
-#[allow(dead_code)] // used by the budget flags landing next
 mod size;
 mod stats;
 mod watch;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
+
+/// The stack of every thread that evaluates, builds or renders a scene: walks
+/// over deeply nested objects and macros recurse (their depth is limited by
+/// `--max-object-depth` and `--max-macro-depth`, sized to fit in this).
+pub const STACK_SIZE: usize = 512 << 20;
+
+/// A pool of `threads` render threads (`--threads`), each with [`STACK_SIZE`]
+/// of stack, as the global pool's (see `main`).
+pub fn thread_pool(threads: usize) -> Result<rayon::ThreadPool, rayon::ThreadPoolBuildError> {
+    rayon::ThreadPoolBuilder::new()
+        .stack_size(STACK_SIZE)
+        .num_threads(threads.max(1))
+        .build()
+}
 
 /// Exit status: success.
 pub const EXIT_OK: i32 = 0;
@@ -72,6 +85,23 @@ pub struct SceneArgs {
     /// Refuse arrays with more elements than this.
     #[arg(long, value_name = "N", default_value_t = 1 << 22)]
     pub max_array_size: usize,
+    /// Refuse objects nested deeper than this (CSG inside CSG, clipped_by;
+    /// unions of unions are flattened and do not count).
+    #[arg(long, value_name = "N", default_value_t = 10_000)]
+    pub max_object_depth: u32,
+    /// Stop when evaluating the scene has taken this much memory (e.g. 2G,
+    /// 512M) [default: half the machine's memory, at most 8G].
+    #[arg(long, value_name = "SIZE", value_parser = size::parse_size)]
+    pub max_memory: Option<u64>,
+    /// Stop after this many macro calls in all.
+    #[arg(long, value_name = "N", default_value_t = 10_000_000)]
+    pub max_macro_calls: u64,
+    /// Refuse strings longer than this (e.g. 64M).
+    #[arg(long, value_name = "SIZE", value_parser = size::parse_size, default_value = "64M")]
+    pub max_string_length: u64,
+    /// Stop evaluating after this many errors.
+    #[arg(long, value_name = "N", default_value_t = 100)]
+    pub max_errors: usize,
     /// Evaluate (and render) the scene as a still at this `clock` value.
     #[arg(long, value_name = "T", allow_negative_numbers = true)]
     pub clock: Option<f64>,

@@ -333,10 +333,7 @@ pub fn run(
         Ok((total, t_build, t2.elapsed(), rayon::current_num_threads()))
     };
     let result = match args.threads {
-        Some(n) => match rayon::ThreadPoolBuilder::new()
-            .num_threads(n.max(1))
-            .build()
-        {
+        Some(n) => match super::thread_pool(n) {
             Ok(pool) => pool.install(job),
             Err(e) => Err(format!("cannot start {n} threads: {e}")),
         },

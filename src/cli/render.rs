@@ -336,10 +336,7 @@ pub fn run(args: &RenderArgs) -> i32 {
     };
     let t_probe = t0.elapsed();
     let pool = match args.threads {
-        Some(n) => match rayon::ThreadPoolBuilder::new()
-            .num_threads(n.max(1))
-            .build()
-        {
+        Some(n) => match super::thread_pool(n) {
             Ok(pool) => Some(pool),
             Err(e) => {
                 eprintln!("error: cannot start {n} threads: {e}");

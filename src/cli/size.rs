@@ -31,28 +31,6 @@ pub fn parse_size(text: &str) -> Result<u64, String> {
     Ok(bytes.round() as u64)
 }
 
-/// `bytes` in the unit that reads best (`1.5 GiB`, `300 MiB`, `12 KiB`, `7 B`).
-pub fn show_size(bytes: u64) -> String {
-    const UNITS: [&str; 4] = ["KiB", "MiB", "GiB", "TiB"];
-    if bytes < 1024 {
-        return format!("{bytes} B");
-    }
-    let mut v = bytes as f64;
-    let mut unit = "B";
-    for u in UNITS {
-        if v < 1024.0 {
-            break;
-        }
-        v /= 1024.0;
-        unit = u;
-    }
-    if v.fract() == 0.0 {
-        format!("{v} {unit}")
-    } else {
-        format!("{v:.1} {unit}")
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -67,12 +45,5 @@ mod tests {
         assert!(parse_size("2X").is_err());
         assert!(parse_size("G").is_err());
         assert!(parse_size("-1G").is_err());
-    }
-
-    #[test]
-    fn sizes_show_in_the_largest_unit() {
-        assert_eq!(show_size(7), "7 B");
-        assert_eq!(show_size(2 << 30), "2 GiB");
-        assert_eq!(show_size(3 << 29), "1.5 GiB");
     }
 }

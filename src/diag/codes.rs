@@ -81,6 +81,18 @@ pub const RECURSION_LIMIT: &str = "rts::limit::macro_recursion";
 pub const INCLUDE_DEPTH: &str = "rts::limit::include_depth";
 /// An array larger than allowed.
 pub const ARRAY_SIZE: &str = "rts::limit::array_size";
+/// Objects nested deeper than `--max-object-depth` (CSG in CSG, `clipped_by`).
+pub const OBJECT_DEPTH: &str = "rts::limit::object_depth";
+/// The evaluation grew the heap past `--max-memory`.
+pub const MEMORY_LIMIT: &str = "rts::limit::memory";
+/// More macro calls than `--max-macro-calls`.
+pub const MACRO_CALLS: &str = "rts::limit::macro_calls";
+/// A string longer than `--max-string-length`.
+pub const STRING_LENGTH: &str = "rts::limit::string_length";
+/// Evaluation stopped after `--max-errors` errors.
+pub const ERROR_LIMIT: &str = "rts::limit::errors";
+/// An editor's evaluation ran past its time.
+pub const TIME_LIMIT: &str = "rts::limit::time";
 /// An image larger than allowed.
 pub const IMAGE_SIZE: &str = "rts::limit::image_size";
 /// A construct rts knows from POV-Ray but does not implement yet.

@@ -462,7 +462,15 @@ impl Evaluator<'_> {
             }
             "concat" => {
                 arity(1, usize::MAX)?;
-                let mut s = String::new();
+                let len = args
+                    .iter()
+                    .map(|(v, _)| match v {
+                        Value::Str(s) => s.len(),
+                        _ => 0,
+                    })
+                    .sum();
+                self.check_string_length(len, call)?;
+                let mut s = String::with_capacity(len);
                 for (v, sp) in args {
                     s.push_str(&self.to_str(v, *sp)?);
                 }

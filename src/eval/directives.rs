@@ -436,7 +436,7 @@ impl Evaluator<'_> {
             .with_help("check that the loop's condition becomes false (e.g. `#declare I = I + 1;` in the body), or raise the limit with --max-loop-iterations")
             .into());
         }
-        Ok(())
+        self.checkpoint(span)
     }
 
     pub(crate) fn reserved(&self, span: Span, name: &str) -> Fail {

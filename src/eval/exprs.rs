@@ -394,6 +394,8 @@ impl Evaluator<'_> {
             }
             sizes.push(n as usize);
         }
+        let bytes = total as u64 * std::mem::size_of::<Option<Value>>() as u64;
+        self.reserve(bytes, span, &format!("this array of {total} elements"))?;
         let mut elems = vec![None; total];
         if let Some(init) = init {
             self.fill_array(init, &sizes, 0, &mut elems, 0)?;

@@ -126,6 +126,10 @@ impl Evaluator<'_> {
 
     /// Puts what a top-level item produced into the scene.
     fn place(&mut self, tok: Tok) {
+        if let Err(f) = self.checkpoint(tok.span()) {
+            self.report(f);
+            return;
+        }
         let fail: Fail = match tok {
             Tok::Deferred(b) => {
                 let t = self.undefer(&b, None);
@@ -256,6 +260,7 @@ impl Evaluator<'_> {
             ))
             .into());
         }
+        self.count_macro_call(call)?;
         if self.macro_depth >= self.options.max_macro_depth {
             self.stopped = true;
             return Err(Diagnostic::error(
@@ -366,7 +371,11 @@ impl Evaluator<'_> {
                     }
                 }
             }
-            return self.call_builtin(name.0 as usize, span, &vals);
+            let v = self.call_builtin(name.0 as usize, span, &vals)?;
+            if let Value::Str(s) = &v {
+                self.check_string_length(s.len(), span)?;
+            }
+            return Ok(v);
         }
         if let Some(m) = self.lookup_macro(name) {
             let mut out = Sink::new();

@@ -434,6 +434,11 @@ fn move_light(light: &mut Light, transform: &mut Transform, t: &Transform) {
 /// Takes the lights out of a placed object and its CSG members, each moved by the
 /// transforms of the objects it was written in (innermost first), then `outer`.
 pub(crate) fn take_lights(obj: &mut crate::scene::Object, outer: Option<&Transform>) -> Vec<Light> {
+    // Members are shared with the declarations they came from: walk (and so
+    // copy) them only when a light is among them.
+    if !holds_lights(obj) {
+        return Vec::new();
+    }
     let t = match (&obj.transform, outer) {
         (Some(own), Some(o)) => Some(own.then(o)),
         (Some(own), None) => Some(**own),
@@ -465,6 +470,17 @@ pub(crate) fn take_lights(obj: &mut crate::scene::Object, outer: Option<&Transfo
         }
     }
     out
+}
+
+/// Whether `obj` or one of its CSG members holds a light.
+fn holds_lights(obj: &crate::scene::Object) -> bool {
+    !obj.lights.is_empty()
+        || match &obj.shape {
+            crate::scene::Shape::Union { children } | crate::scene::Shape::Csg { children, .. } => {
+                children.iter().any(holds_lights)
+            }
+            _ => false,
+        }
 }
 
 /// Moves a light's location, aim and area axes by `t`.

@@ -8,6 +8,7 @@
 mod atmosphere;
 mod blob;
 mod blocks;
+mod budget;
 mod builtins;
 mod camera;
 mod camera_path;
@@ -47,6 +48,7 @@ pub mod value;
 mod vocabulary;
 mod warps;
 
+pub use budget::Interrupt;
 pub use builtins::{is_function as is_builtin_function, BUILTIN_NAMES};
 pub use include::{find_include, load_file, search_dirs, LoadError, STDLIB};
 pub use keyframe::{ease, Easing};
@@ -101,9 +103,23 @@ pub struct EvalOptions {
     pub max_include_depth: usize,
     /// Most elements in one array.
     pub max_array_size: usize,
+    /// Deepest nesting of CSG objects (`union`s of `union`s are flattened and
+    /// do not count).
+    pub max_object_depth: u32,
     /// Whether `#write` reaches the disk (rendering) or only later reads of the
     /// same evaluation (`rts check`, the editor).
     pub write_files: bool,
+    /// Most bytes the evaluation may grow the heap by (values, arrays, strings,
+    /// objects, meshes, decoded images).
+    pub max_memory: u64,
+    /// Most macro calls in all.
+    pub max_macro_calls: u64,
+    /// Most bytes in one string.
+    pub max_string_length: usize,
+    /// Errors after which evaluation stops.
+    pub max_errors: usize,
+    /// How an editor stops an evaluation early.
+    pub interrupt: Interrupt,
 }
 
 impl Default for EvalOptions {
@@ -126,7 +142,13 @@ impl Default for EvalOptions {
             max_macro_depth: 1_000,
             max_include_depth: 64,
             max_array_size: 1 << 22,
+            max_object_depth: 10_000,
             write_files: false,
+            max_memory: crate::memory::default_eval_budget(),
+            max_macro_calls: 10_000_000,
+            max_string_length: 64 << 20,
+            max_errors: 100,
+            interrupt: Interrupt::default(),
         }
     }
 }
@@ -229,6 +251,7 @@ pub fn eval_cached(
         pending_pattern: None,
         pattern_items: false,
         light_groups: 0,
+        spent: budget::Spent::start(),
     };
     ev.define_command_line();
     ev.run_top(&file.items);
@@ -330,6 +353,8 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) pattern_items: bool,
     /// `light_group`s made so far (each takes one bit of the objects' masks).
     pub(crate) light_groups: u32,
+    /// What the evaluation has spent of its budgets (see `budget.rs`).
+    pub(crate) spent: budget::Spent,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps
@@ -376,7 +401,7 @@ impl Evaluator<'_> {
                     "{omitted} more steps of the include/macro chain are not shown"
                 ));
             }
-            self.diags.push(*d);
+            self.record(*d);
         }
     }
 
@@ -430,6 +455,7 @@ impl Evaluator<'_> {
     }
 
     fn finish_scene(mut self) -> Evaluated {
+        self.note_repeats();
         if !crate::diag::has_errors(&self.diags) {
             let main = self.include_stack[0];
             let in_macros = self.names_in_macro_bodies();

@@ -5,7 +5,7 @@ use super::cursor::{Cursor, Tok};
 use super::value::Value;
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
-use crate::scene::{CsgOp, Object, Shape, Texture, Transform};
+use crate::scene::{CsgOp, Members, Object, Shape, Texture, Transform};
 use crate::span::Span;
 use glam::{DMat4, DVec4};
 use std::sync::Arc;
@@ -177,8 +177,16 @@ impl Evaluator<'_> {
             }
             "light_group" => return self.light_group(c),
             "union" | "merge" | "intersection" | "difference" => {
-                let mut children = Vec::new();
+                let kw = c.block;
+                let op = match kw {
+                    "merge" => Some(CsgOp::Merge),
+                    "intersection" => Some(CsgOp::Intersection),
+                    "difference" => Some(CsgOp::Difference),
+                    _ => None,
+                };
+                let mut children = Members::new();
                 let mut lights = Vec::new();
+                let mut nesting = 0;
                 while let Some(Tok::Block(
                     _,
                     Value::Object(_) | Value::Light(_) | Value::Poison,
@@ -187,36 +195,27 @@ impl Evaluator<'_> {
                 {
                     match c.next() {
                         Some(Tok::Block(_, Value::Object(o), _)) => {
-                            children.push(Arc::try_unwrap(o).unwrap_or_else(|a| (*a).clone()))
+                            let o = Arc::try_unwrap(o).unwrap_or_else(|a| (*a).clone());
+                            nesting = nesting.max(add_member(&mut children, o, op));
                         }
                         // As in POV-Ray, a light among a CSG's members moves with it.
                         Some(Tok::Block(_, Value::Light(l), _)) => lights.push((*l).clone()),
                         _ => {}
                     }
                 }
-                let kw = c.block;
                 if children.is_empty() {
                     self.warn(
                         Diagnostic::warning(codes::MISSING_VALUE, span, format!("this {kw} has no objects"))
                             .with_help(format!("put objects inside the {kw}, e.g. `{kw} {{ sphere {{ … }} box {{ … }} }}`")),
                     );
                 }
-                let shape = match kw {
-                    "merge" => Shape::Csg {
-                        op: CsgOp::Merge,
-                        children,
-                    },
-                    "intersection" => Shape::Csg {
-                        op: CsgOp::Intersection,
-                        children,
-                    },
-                    "difference" => Shape::Csg {
-                        op: CsgOp::Difference,
-                        children,
-                    },
-                    _ => Shape::Union { children },
+                let shape = match op {
+                    Some(op) => Shape::Csg { op, children },
+                    None => Shape::Union { children },
                 };
                 let mut obj = Object::new(shape, span);
+                obj.nesting = nesting;
+                self.check_nesting(&obj)?;
                 obj.lights = lights;
                 self.modifiers(&mut obj, c, true);
                 return Ok(obj);
@@ -249,6 +248,24 @@ impl Evaluator<'_> {
         };
         self.modifiers(&mut obj, c, false);
         Ok(obj)
+    }
+
+    /// Refuses an object nested deeper than `--max-object-depth` (every walk
+    /// over the object tree, when building and rendering, is that deep).
+    fn check_nesting(&mut self, obj: &Object) -> R<()> {
+        let max = self.options.max_object_depth;
+        if obj.nesting <= max {
+            return Ok(());
+        }
+        self.stopped = true;
+        Err(Diagnostic::error(
+            codes::OBJECT_DEPTH,
+            obj.span,
+            format!("objects nested more than {max} deep (CSG inside CSG, or clipped_by)"),
+        )
+        .with_label(format!("this object is {} levels deep", obj.nesting))
+        .with_help("a union of unions is flattened and never counts; check a recursive macro or a loop that wraps the object in itself, or raise the limit with --max-object-depth")
+        .into())
     }
 
     pub(crate) fn bad_size(&self, span: Span, what: &str, v: f64) -> Fail {
@@ -583,6 +600,11 @@ impl Evaluator<'_> {
                     .with_help("write e.g. `clipped_by { plane { y, 0 } }`")
                     .into());
                 }
+                obj.nesting = clips
+                    .iter()
+                    .map(|c| c.nesting + 1)
+                    .fold(obj.nesting, u32::max);
+                self.check_nesting(obj)?;
                 obj.clipped_by = Some(Arc::new(clips));
             }
             Tok::Block("bounded_by", _, _) => {
@@ -715,6 +737,43 @@ fn value_of(t: &Tok) -> Value {
     }
 }
 
+/// Adds `child` to the members of a new group (`op`: `None` for a union) and
+/// returns the nesting the group gets from it. A child that is a group of the
+/// same kind with nothing of its own (no transform, texture, interior, flags,
+/// clipping or lights) gives its members instead: `union { union { A B } C }` is
+/// `union { A B C }` (likewise merge in merge, intersection in intersection, and
+/// a difference as the first operand of a difference), so a union grown in a
+/// loop (`#declare U = union { object { U } box { … } }`) stays one flat union,
+/// each step taking constant time.
+fn add_member(members: &mut Members, child: Object, op: Option<CsgOp>) -> u32 {
+    let same_kind = match (&child.shape, op) {
+        (Shape::Union { .. }, None) => true,
+        (Shape::Csg { op: inner, .. }, Some(CsgOp::Difference)) => {
+            *inner == CsgOp::Difference && members.is_empty()
+        }
+        (Shape::Csg { op: inner, .. }, Some(outer)) => *inner == outer,
+        _ => false,
+    };
+    let plain = child.transform.is_none()
+        && child.texture.is_none()
+        && child.interior.is_none()
+        && child.flags == crate::scene::ObjectFlags::default()
+        && child.clipped_by.is_none()
+        && child.lights.is_empty();
+    if same_kind && plain {
+        match child.shape {
+            Shape::Union { children } | Shape::Csg { children, .. } if !children.is_empty() => {
+                members.append(children);
+                return child.nesting;
+            }
+            _ => {}
+        }
+    }
+    let nesting = child.nesting + 1;
+    members.push_back(child);
+    nesting
+}
+
 /// Applies a transform to an object (its texture moves with it: textures are kept in
 /// the object's own frame).
 pub(crate) fn apply_transform(obj: &mut Object, t: &Transform) {
@@ -791,9 +850,10 @@ impl Evaluator<'_> {
         }
         let group = self.light_groups;
         self.light_groups += 1;
-        let mut children = Vec::new();
+        let mut children = Members::new();
         let mut lights = Vec::new();
         let mut global = false;
+        let mut nesting = 0;
         loop {
             match c.peek() {
                 Some(
@@ -801,7 +861,9 @@ impl Evaluator<'_> {
                     | Tok::Val(Value::Object(_) | Value::Light(_), _),
                 ) => match c.next() {
                     Some(Tok::Block(_, Value::Object(o), _) | Tok::Val(Value::Object(o), _)) => {
-                        children.push(Arc::try_unwrap(o).unwrap_or_else(|a| (*a).clone()))
+                        let o = Arc::try_unwrap(o).unwrap_or_else(|a| (*a).clone());
+                        nesting = nesting.max(o.nesting + 1);
+                        children.push_back(o);
                     }
                     Some(Tok::Block(_, Value::Light(l), _) | Tok::Val(Value::Light(l), _)) => {
                         let mut l = (*l).clone();
@@ -818,6 +880,8 @@ impl Evaluator<'_> {
             }
         }
         let mut obj = Object::new(Shape::Union { children }, span);
+        obj.nesting = nesting;
+        self.check_nesting(&obj)?;
         obj.lights = lights;
         obj.flags.light_groups = 1u64 << group;
         obj.flags.global_lights = Some(global);

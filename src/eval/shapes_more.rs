@@ -219,6 +219,8 @@ impl Evaluator<'_> {
             }
         };
         let [w, h] = size;
+        let bytes = (w * h * std::mem::size_of::<f32>()) as u64;
+        self.reserve(bytes, last, &format!("a {w} by {h} height field"))?;
         let mut grid = Vec::with_capacity(w * h);
         for j in 0..h {
             for i in 0..w {

@@ -33,7 +33,7 @@ pub use material::{
 };
 pub use material::{ImagePattern, ImageUse, NormalBlend, SlopeSpec};
 pub use media::{Media, Scattering, ScatteringKind};
-pub use object::{CsgOp, MeshData, Object, ObjectFlags, Shape, TextData};
+pub use object::{CsgOp, Members, MeshData, Object, ObjectFlags, Shape, TextData};
 pub use path::{PathTracing, PixelFilter};
 pub use photons::{LightPhotons, ObjectPhotons, PhotonDensity, Photons, PhotonsBlock};
 pub use radiosity::{Radiosity, RadiosityBlock};

@@ -59,6 +59,10 @@ pub struct Object {
     /// POV-Ray. The evaluator takes them out into the scene's lights when the
     /// object is placed, so the renderer never sees them here.
     pub lights: Vec<super::Light>,
+    /// How many levels of `union`, CSG and `clipped_by` lie below this object
+    /// (0 for a plain shape): walks over the object tree are as deep as this,
+    /// and evaluation keeps it under a limit.
+    pub nesting: u32,
     /// Where the object was written.
     pub span: Span,
 }
@@ -74,10 +78,16 @@ impl Object {
             flags: ObjectFlags::default(),
             clipped_by: None,
             lights: Vec::new(),
+            nesting: 0,
             span,
         }
     }
 }
+
+/// The members of a `union` or CSG object: a persistent vector, so copying an
+/// object (`object { Fence }`) shares its members instead of copying them, and
+/// `union { object { Fence } box { … } }` grows the union in constant time.
+pub type Members = imbl::Vector<Object>;
 
 /// The shapes of this release, in object space.
 #[derive(Clone, Debug)]
@@ -115,7 +125,7 @@ pub enum Shape {
     /// before the union's.
     Union {
         /// The member objects.
-        children: Vec<Object>,
+        children: Members,
     },
     /// `cylinder { BASE, CAP, RADIUS [open] }`.
     Cylinder {
@@ -254,7 +264,7 @@ pub enum Shape {
         /// Which operation.
         op: CsgOp,
         /// The operands, in order.
-        children: Vec<Object>,
+        children: Members,
     },
 }
 
