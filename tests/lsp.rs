@@ -432,3 +432,77 @@ light_source { <0, 5, -5> rgb 1 }\n#include \"lib.inc\"\nsphere { 0, Size }\n";
     assert_eq!(errs.len(), 1, "{diags:#?}");
     assert_eq!(range(errs[0]).0, 3);
 }
+
+#[test]
+fn an_endless_loop_being_typed_is_cancelled_by_the_next_edit() {
+    let dir = folder("endless");
+    let scene = dir.join("loop.rts");
+    let scene_uri = uri(&scene);
+    // A loop that forgot its step and makes a sphere on every pass: alone it
+    // runs until the editor's budgets end it.
+    let endless = "#declare I = 0;\n#while (I < 10)\n  sphere { <I, 0, 0>, 1 }\n#end\n";
+    let fixed = "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n\
+                 light_source { <0, 5, -5> rgb 1 }\n\
+                 #declare I = 0;\n#while (I < 10)\n  sphere { <I, 0, 0>, 1 }\n  \
+                 #declare I = I + 1;\n#end\n";
+    let mut s = Server::start();
+    s.request("initialize", json!({"processId": null, "capabilities": {}}));
+    s.notify("initialized", json!({}));
+    s.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": scene_uri, "languageId": "rts", "version": 1, "text": endless}}),
+    );
+    // The next keystrokes arrive while the loop evaluates: the server reads
+    // them at once, and the analysis of the older text is dropped.
+    s.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": scene_uri, "version": 2},
+               "contentChanges": [{"text": fixed}]}),
+    );
+    let m = loop {
+        let m = s.recv();
+        if m["method"] == "textDocument/publishDiagnostics" {
+            break m;
+        }
+    };
+    // The first diagnostics published are the fixed text's: none.
+    assert_eq!(m["params"]["version"], 2, "{m}");
+    assert!(
+        errors(m["params"]["diagnostics"].as_array().unwrap()).is_empty(),
+        "{m}"
+    );
+    // And a request about the document answers from the new text.
+    let symbols = s.request(
+        "textDocument/documentSymbol",
+        json!({"textDocument": {"uri": scene_uri}}),
+    );
+    assert!(symbols.to_string().contains("light"), "{symbols}");
+}
+
+#[test]
+fn a_runaway_loop_alone_ends_at_the_editors_budget() {
+    let dir = folder("runaway");
+    let scene = dir.join("loop.rts");
+    let scene_uri = uri(&scene);
+    let endless = "#declare I = 0;\n#while (I < 10)\n  sphere { <I, 0, 0>, 1 }\n#end\n";
+    let mut s = Server::start();
+    s.request("initialize", json!({"processId": null, "capabilities": {}}));
+    s.notify("initialized", json!({}));
+    s.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": scene_uri, "languageId": "rts", "version": 1, "text": endless}}),
+    );
+    let diags = s.diagnostics(&scene_uri);
+    let codes: Vec<&Value> = errors(&diags).iter().map(|d| &d["code"]).collect();
+    assert_eq!(codes.len(), 1, "{diags:?}");
+    assert!(
+        [
+            "rts::limit::memory",
+            "rts::limit::loop_iterations",
+            "rts::limit::time"
+        ]
+        .iter()
+        .any(|c| codes[0] == c),
+        "{diags:?}"
+    );
+}

@@ -180,7 +180,11 @@ pub fn outline(a: &Analysis) -> &[OutlineItem] {
 pub fn editor_options(include_dirs: Vec<PathBuf>) -> EvalOptions {
     let mut o = EvalOptions::default();
     o.access.include_dirs = include_dirs;
-    // An editor checks as the user types: keep runaway loops short.
+    // An editor checks as the user types: keep runaway loops and macros short
+    // and the memory small (the language server also cancels an analysis
+    // when a newer edit arrives, and gives each a few seconds).
     o.max_loop_iterations = 2_000_000;
+    o.max_macro_calls = 1_000_000;
+    o.max_memory = o.max_memory.min(512 << 20);
     o
 }

@@ -1,15 +1,20 @@
 //! `rts lsp`: a Language Server on stdio (tower-lsp-server), a thin protocol layer over
 //! [`rts::ide`]. Documents are analysed on open, change and save; documents that
-//! include a changed file are analysed again. Analysis runs under `catch_unwind`, so a
-//! bug shows as a missing answer, never as a dead server; nothing but protocol goes to
-//! stdout.
+//! include a changed file are analysed again. Analysis runs on a thread of its own
+//! ([`worker`]) under `catch_unwind`, so a bug shows as a missing answer, never as a
+//! dead server, and a slow scene never stops the server from reading the next edit,
+//! which cancels it; nothing but protocol goes to stdout.
+
+mod worker;
 
 use rts::diag::Severity;
 use rts::eval::EvalOptions;
 use rts::ide::{self, index::OutlineKind, Analysis};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
+use std::time::Duration;
 use tower_lsp_server::jsonrpc::Result;
 use tower_lsp_server::ls_types as lsp;
 use tower_lsp_server::{Client, LanguageServer, LspService, Server};
@@ -31,20 +36,44 @@ struct Doc {
     text: String,
     version: i32,
     analysis: Option<Arc<Analysis>>,
+    /// Counts the analyses asked for; only the newest one's result is kept.
+    generation: u64,
+    /// The cancellation flag of the analysis running for the current text,
+    /// `None` when `analysis` is of the current text.
+    pending: Option<Arc<AtomicBool>>,
 }
 
-#[derive(Default)]
+impl Doc {
+    fn new(path: PathBuf, text: String, version: i32) -> Doc {
+        Doc {
+            path,
+            text,
+            version,
+            analysis: None,
+            generation: 0,
+            pending: None,
+        }
+    }
+}
+
 struct State {
     docs: HashMap<lsp::Uri, Doc>,
     options: EvalOptions,
     /// The client can watch files for us (include files changed outside the editor).
     watch_files: bool,
+    /// Woken whenever an analysis is stored.
+    ready: Arc<tokio::sync::Notify>,
 }
 
 struct Backend {
     client: Client,
     state: Arc<Mutex<State>>,
+    worker: worker::Worker,
 }
+
+/// How long a request waits for the analysis of the text it is about before
+/// it answers from the previous one.
+const WAIT_FOR_ANALYSIS: Duration = Duration::from_secs(2);
 
 /// Runs the server until the client exits; returns the exit status.
 pub fn run(args: &LspArgs) -> i32 {
@@ -56,13 +85,25 @@ pub fn run(args: &LspArgs) -> i32 {
         }
     };
     let options = ide::editor_options(args.include.clone());
+    let worker = match worker::Worker::start() {
+        Ok(w) => w,
+        Err(e) => {
+            eprintln!("error: cannot start the language server's analysis thread: {e}");
+            return super::EXIT_ERRORS;
+        }
+    };
     runtime.block_on(async move {
         let state = Arc::new(Mutex::new(State {
             docs: HashMap::new(),
             options,
             watch_files: false,
+            ready: Arc::new(tokio::sync::Notify::new()),
         }));
-        let (service, socket) = LspService::new(|client| Backend { client, state });
+        let (service, socket) = LspService::new(|client| Backend {
+            client,
+            state,
+            worker,
+        });
         Server::new(tokio::io::stdin(), tokio::io::stdout(), socket)
             .serve(service)
             .await;
@@ -172,9 +213,26 @@ fn symbol(o: &ide::index::OutlineItem, a: &Analysis) -> lsp::DocumentSymbol {
 }
 
 impl Backend {
-    /// The analysis of an open document.
-    fn analysis(&self, uri: &lsp::Uri) -> Option<Arc<Analysis>> {
-        lock(&self.state).docs.get(uri)?.analysis.clone()
+    /// The analysis of an open document, of its current text when that
+    /// analysis finishes within [`WAIT_FOR_ANALYSIS`], else the last one.
+    async fn analysis(&self, uri: &lsp::Uri) -> Option<Arc<Analysis>> {
+        let until = tokio::time::Instant::now() + WAIT_FOR_ANALYSIS;
+        loop {
+            let ready = lock(&self.state).ready.clone();
+            let notified = ready.notified();
+            tokio::pin!(notified);
+            notified.as_mut().enable();
+            {
+                let st = lock(&self.state);
+                let doc = st.docs.get(uri)?;
+                if doc.pending.is_none() {
+                    return doc.analysis.clone();
+                }
+            }
+            if tokio::time::timeout_at(until, notified).await.is_err() {
+                return lock(&self.state).docs.get(uri)?.analysis.clone();
+            }
+        }
     }
 
     /// Analyses `uri` and the open documents that include it; publishes diagnostics.
@@ -186,53 +244,88 @@ impl Backend {
         else {
             return;
         };
-        self.refresh_path(Some(uri), &changed).await;
+        self.refresh_path(Some(uri), &changed);
     }
 
     /// Analyses `uri` (when given) and the open documents that include the file
-    /// `changed`; publishes their diagnostics.
-    async fn refresh_path(&self, uri: Option<&lsp::Uri>, changed: &Path) {
-        let mut published = Vec::new();
-        {
-            let mut st = lock(&self.state);
-            let overlays: HashMap<PathBuf, String> = st
-                .docs
-                .values()
-                .map(|d| (ide::canonical(&d.path), d.text.clone()))
-                .collect();
-            let options = st.options.clone();
-            let targets: Vec<lsp::Uri> = st
-                .docs
-                .iter()
-                .filter(|(u, d)| {
-                    Some(*u) == uri
-                        || d.analysis
-                            .as_ref()
-                            .is_some_and(|a| a.included_paths().iter().any(|p| p == changed))
-                })
-                .map(|(u, _)| u.clone())
-                .collect();
-            for u in targets {
-                let Some(doc) = st.docs.get_mut(&u) else {
-                    continue;
-                };
-                let analysis = guarded(|| ide::analyze(&doc.path, &doc.text, &overlays, &options));
-                let diags = analysis.as_ref().and_then(|a| {
-                    guarded(|| {
-                        ide::diagnostics(a)
-                            .iter()
-                            .map(diagnostic)
-                            .collect::<Vec<_>>()
-                    })
-                });
-                doc.analysis = analysis.map(Arc::new);
-                published.push((u, diags.unwrap_or_default(), doc.version));
+    /// `changed`, on the analysis thread; each document's diagnostics are
+    /// published when its analysis ends, unless a newer one was asked for
+    /// meanwhile (which cancels it).
+    fn refresh_path(&self, uri: Option<&lsp::Uri>, changed: &Path) {
+        let mut st = lock(&self.state);
+        let overlays: HashMap<PathBuf, String> = st
+            .docs
+            .values()
+            .map(|d| (ide::canonical(&d.path), d.text.clone()))
+            .collect();
+        let options = st.options.clone();
+        let ready = st.ready.clone();
+        let targets: Vec<lsp::Uri> = st
+            .docs
+            .iter()
+            .filter(|(u, d)| {
+                Some(*u) == uri
+                    || d.analysis
+                        .as_ref()
+                        .is_some_and(|a| a.included_paths().iter().any(|p| p == changed))
+            })
+            .map(|(u, _)| u.clone())
+            .collect();
+        for u in targets {
+            let Some(doc) = st.docs.get_mut(&u) else {
+                continue;
+            };
+            if let Some(old) = doc.pending.take() {
+                old.store(true, Ordering::Relaxed);
             }
-        }
-        for (u, diags, version) in published {
-            self.client
-                .publish_diagnostics(u, diags, Some(version))
-                .await;
+            let cancel = Arc::new(AtomicBool::new(false));
+            doc.pending = Some(cancel.clone());
+            doc.generation += 1;
+            let (generation, version) = (doc.generation, doc.version);
+            let mut options = options.clone();
+            options.interrupt.cancel = Some(cancel);
+            let (reply, answer) = tokio::sync::oneshot::channel();
+            let job = worker::Job {
+                path: doc.path.clone(),
+                text: doc.text.clone(),
+                overlays: overlays.clone(),
+                options,
+                reply,
+            };
+            if !self.worker.submit(job) {
+                doc.pending = None;
+                continue;
+            }
+            let (state, client, ready) = (self.state.clone(), self.client.clone(), ready.clone());
+            tokio::spawn(async move {
+                let analysis = answer.await.ok().flatten();
+                let published = {
+                    let mut st = lock(&state);
+                    let Some(doc) = st.docs.get_mut(&u) else {
+                        return;
+                    };
+                    if doc.generation != generation {
+                        return; // a newer analysis of this document is on its way
+                    }
+                    doc.pending = None;
+                    let diags = analysis.as_ref().and_then(|a| {
+                        guarded(|| {
+                            ide::diagnostics(a)
+                                .iter()
+                                .map(diagnostic)
+                                .collect::<Vec<_>>()
+                        })
+                    });
+                    if analysis.is_some() {
+                        doc.analysis = analysis.map(Arc::new);
+                    }
+                    diags
+                };
+                ready.notify_waiters();
+                if let Some(diags) = published {
+                    client.publish_diagnostics(u, diags, Some(version)).await;
+                }
+            });
         }
     }
 }
@@ -337,7 +430,7 @@ impl LanguageServer for Backend {
         // An include changed outside the editor: check the open scenes that read it.
         for change in params.changes {
             let path = ide::canonical(&to_path(&change.uri));
-            self.refresh_path(None, &path).await;
+            self.refresh_path(None, &path);
         }
     }
 
@@ -349,12 +442,7 @@ impl LanguageServer for Backend {
         let doc = params.text_document;
         lock(&self.state).docs.insert(
             doc.uri.clone(),
-            Doc {
-                path: to_path(&doc.uri),
-                text: doc.text,
-                version: doc.version,
-                analysis: None,
-            },
+            Doc::new(to_path(&doc.uri), doc.text, doc.version),
         );
         self.refresh(&doc.uri).await;
     }
@@ -386,13 +474,17 @@ impl LanguageServer for Backend {
 
     async fn did_close(&self, params: lsp::DidCloseTextDocumentParams) {
         let uri = params.text_document.uri;
-        lock(&self.state).docs.remove(&uri);
+        if let Some(doc) = lock(&self.state).docs.remove(&uri) {
+            if let Some(c) = doc.pending {
+                c.store(true, Ordering::Relaxed);
+            }
+        }
         self.client.publish_diagnostics(uri, Vec::new(), None).await;
     }
 
     async fn hover(&self, params: lsp::HoverParams) -> Result<Option<lsp::Hover>> {
         let p = params.text_document_position_params;
-        let Some(a) = self.analysis(&p.text_document.uri) else {
+        let Some(a) = self.analysis(&p.text_document.uri).await else {
             return Ok(None);
         };
         Ok(guarded(|| ide::hover(&a, pos(p.position)))
@@ -411,9 +503,8 @@ impl LanguageServer for Backend {
         params: lsp::CompletionParams,
     ) -> Result<Option<lsp::CompletionResponse>> {
         let p = params.text_document_position;
-        // Complete against the text as it is now (the analysis is refreshed on
-        // every change, so it is).
-        let Some(a) = self.analysis(&p.text_document.uri) else {
+        // Complete against the text as it is now: wait for its analysis.
+        let Some(a) = self.analysis(&p.text_document.uri).await else {
             return Ok(None);
         };
         let items = guarded(|| ide::completion(&a, pos(p.position))).unwrap_or_default();
@@ -451,7 +542,7 @@ impl LanguageServer for Backend {
         params: lsp::GotoDefinitionParams,
     ) -> Result<Option<lsp::GotoDefinitionResponse>> {
         let p = params.text_document_position_params;
-        let Some(a) = self.analysis(&p.text_document.uri) else {
+        let Some(a) = self.analysis(&p.text_document.uri).await else {
             return Ok(None);
         };
         Ok(guarded(|| ide::definition(&a, pos(p.position)))
@@ -462,7 +553,7 @@ impl LanguageServer for Backend {
 
     async fn references(&self, params: lsp::ReferenceParams) -> Result<Option<Vec<lsp::Location>>> {
         let p = params.text_document_position;
-        let Some(a) = self.analysis(&p.text_document.uri) else {
+        let Some(a) = self.analysis(&p.text_document.uri).await else {
             return Ok(None);
         };
         let locs =
@@ -475,7 +566,7 @@ impl LanguageServer for Backend {
         &self,
         params: lsp::DocumentSymbolParams,
     ) -> Result<Option<lsp::DocumentSymbolResponse>> {
-        let Some(a) = self.analysis(&params.text_document.uri) else {
+        let Some(a) = self.analysis(&params.text_document.uri).await else {
             return Ok(None);
         };
         let symbols = guarded(|| ide::outline(&a).iter().map(|o| symbol(o, &a)).collect());
@@ -486,7 +577,7 @@ impl LanguageServer for Backend {
         &self,
         params: lsp::DocumentFormattingParams,
     ) -> Result<Option<Vec<lsp::TextEdit>>> {
-        let Some(a) = self.analysis(&params.text_document.uri) else {
+        let Some(a) = self.analysis(&params.text_document.uri).await else {
             return Ok(None);
         };
         let unit = if params.options.insert_spaces {
@@ -512,7 +603,7 @@ impl LanguageServer for Backend {
         &self,
         params: lsp::SemanticTokensParams,
     ) -> Result<Option<lsp::SemanticTokensResult>> {
-        let Some(a) = self.analysis(&params.text_document.uri) else {
+        let Some(a) = self.analysis(&params.text_document.uri).await else {
             return Ok(None);
         };
         let Some(tokens) = guarded(|| ide::semantic_tokens(&a)) else {
