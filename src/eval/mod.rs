@@ -14,6 +14,7 @@ mod camera_path;
 mod cursor;
 mod directives;
 mod exprs;
+mod file_data;
 pub mod file_io;
 pub mod function;
 mod import;
