@@ -9,7 +9,6 @@ mod manifest;
 mod path_opts;
 mod render;
 mod sequence;
-#[allow(dead_code)] // used by the budget flags landing next
 mod size;
 mod stats;
 mod watch;
@@ -72,6 +71,14 @@ pub struct SceneArgs {
     /// Refuse arrays with more elements than this.
     #[arg(long, value_name = "N", default_value_t = 1 << 22)]
     pub max_array_size: usize,
+    /// Refuse a scene or #include file (or a file #fopen reads) larger than SIZE
+    /// (`64M`, `1G`).
+    #[arg(long, value_name = "SIZE", default_value = "256M", value_parser = size::parse_size)]
+    pub max_source_size: u64,
+    /// Stop when the files the scene writes with #write would hold more than SIZE
+    /// in all.
+    #[arg(long, value_name = "SIZE", default_value = "256M", value_parser = size::parse_size)]
+    pub max_write: u64,
     /// Evaluate (and render) the scene as a still at this `clock` value.
     #[arg(long, value_name = "T", allow_negative_numbers = true)]
     pub clock: Option<f64>,

@@ -258,7 +258,8 @@ pub fn run(
         assumed_gamma: scene.global.assumed_gamma,
     };
     let crop = resolve_crop(settings, opts.width, opts.height);
-    let mut fp_text = std::fs::read(&args.scene_file).unwrap_or_default();
+    let mut fp_text =
+        rts::files::read_regular(&args.scene_file, args.scene.max_source_size).unwrap_or_default();
     fp_text.extend(format!("{:?}{:?}", args.scene.define, args.scene.clock).bytes());
     let key = checkpoint::Key::new(
         &opts,

@@ -305,7 +305,7 @@ pub fn run(args: &RenderArgs) -> i32 {
         Err(e) => return usage(e),
     };
     let t0 = Instant::now();
-    let mut parsed = match common::parse(&args.scene_file) {
+    let mut parsed = match common::parse(&args.scene_file, args.scene.max_source_size) {
         Ok(p) => p,
         Err(e) => {
             eprintln!("error: {e}");

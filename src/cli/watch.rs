@@ -84,7 +84,7 @@ pub fn run(args: &WatchArgs) -> i32 {
         let files = render_once(args, &options);
         // Reading files makes events too (and editors touch files without changing
         // them): only a change of contents starts a new render.
-        let seen = fingerprint(&files);
+        let seen = fingerprint(&files, args.scene.max_source_size);
         // Watch the folder of every file read (new includes may have appeared).
         for dir in files.iter().filter_map(|f| f.parent()) {
             if watched_dirs.insert(dir.to_path_buf()) {
@@ -106,7 +106,7 @@ pub fn run(args: &WatchArgs) -> i32 {
                 let p = e.path.canonicalize().unwrap_or_else(|_| e.path.clone());
                 files.contains(&p)
             });
-            if hit && fingerprint(&files) != seen {
+            if hit && fingerprint(&files, args.scene.max_source_size) != seen {
                 // Collect any further events of the same save.
                 while rx.try_recv().is_ok() {}
                 break;
@@ -207,11 +207,11 @@ fn render_once(args: &WatchArgs, options: &rts::eval::EvalOptions) -> HashSet<Pa
 
 /// A hash of each file's contents (`None`: unreadable), to tell real changes from
 /// events that changed nothing.
-fn fingerprint(files: &HashSet<PathBuf>) -> HashMap<PathBuf, Option<u64>> {
+fn fingerprint(files: &HashSet<PathBuf>, limit: u64) -> HashMap<PathBuf, Option<u64>> {
     files
         .iter()
         .map(|f| {
-            let h = std::fs::read(f).ok().map(|bytes| {
+            let h = rts::files::read_regular(f, limit).ok().map(|bytes| {
                 let mut h = DefaultHasher::new();
                 bytes.hash(&mut h);
                 h.finish()

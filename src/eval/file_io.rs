@@ -12,13 +12,16 @@
 //! the disk, so `rts check` and the editor never write files.
 
 use super::file_data::{format_g, line_col, next_value, skip_separators, write_binary};
+use super::include::show_bytes;
 use super::value::Value;
 use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
+use crate::files::{Kind, ReadError};
 use crate::span::Span;
 use crate::syntax::ast::{BinaryKind, Expr, LValue, OpenMode};
 use crate::syntax::Sym;
 use std::cell::RefCell;
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
@@ -44,9 +47,6 @@ enum FileState {
 
 /// Files written during one evaluation, by path (see the module documentation).
 pub(crate) type Overlay = rustc_hash::FxHashMap<PathBuf, Rc<[u8]>>;
-
-/// The most bytes one file may grow to by `#write` (a runaway loop ends here).
-const MAX_WRITTEN: usize = 256 << 20;
 
 /// Where `name` in `dir` is, with the folder made canonical (the file itself need not
 /// exist).
@@ -85,24 +85,15 @@ impl Evaluator<'_> {
         let v = self.expr(file)?;
         let fname = self.to_str(&v, file.span)?;
         self.files_seen.insert(name);
-        let (path, state) = match mode {
-            OpenMode::Read => {
-                let (path, data) = self.read_whole(&fname, file.span)?;
-                (path, FileState::Read { data, pos: 0 })
-            }
-            OpenMode::Write => (
-                self.write_path(&fname, file.span)?,
-                FileState::Write { buf: Vec::new() },
-            ),
-            OpenMode::Append => {
-                let path = self.write_path(&fname, file.span)?;
-                let buf = match self.written.get(&path) {
-                    Some(d) => d.to_vec(),
-                    None => std::fs::read(&path).unwrap_or_default(),
-                };
-                (path, FileState::Write { buf })
+        let (path, state) = match self.open_state(&fname, file.span, mode) {
+            Ok(opened) => opened,
+            Err(e) => {
+                // Reported here: its #read, #write and #fclose say nothing more.
+                self.files_failed.insert(name);
+                return Err(e);
             }
         };
+        self.files_failed.remove(&name);
         let f = Rc::new(RefCell::new(OpenFile {
             path,
             shown: fname.to_string(),
@@ -116,6 +107,28 @@ impl Evaluator<'_> {
             self.open_writes.push(f);
         }
         Ok(())
+    }
+
+    /// Where a file `#fopen` opens is, and what it starts with.
+    fn open_state(&mut self, fname: &str, span: Span, mode: OpenMode) -> R<(PathBuf, FileState)> {
+        Ok(match mode {
+            OpenMode::Read => {
+                let (path, data) = self.read_whole(fname, span)?;
+                (path, FileState::Read { data, pos: 0 })
+            }
+            OpenMode::Write => (
+                self.write_path(fname, span)?,
+                FileState::Write { buf: Vec::new() },
+            ),
+            OpenMode::Append => {
+                let path = self.write_path(fname, span)?;
+                let buf = match self.written.get(&path) {
+                    Some(d) => d.to_vec(),
+                    None => self.read_for_append(&path, fname, span)?,
+                };
+                (path, FileState::Write { buf })
+            }
+        })
     }
 
     /// `#fclose NAME`. Closing a file already closed at the end of its data is
@@ -222,17 +235,62 @@ impl Evaluator<'_> {
             ))
             .into());
         };
-        if buf.len() + out.len() > MAX_WRITTEN {
+        let max = self.options.max_write;
+        if self.written_bytes.saturating_add(out.len() as u64) > max {
+            self.stopped = true;
             return Err(Diagnostic::error(
-                codes::FILE_IO,
+                codes::WRITE_SIZE,
                 span,
-                format!("`{shown}` would grow past {} MiB", MAX_WRITTEN >> 20),
+                format!(
+                    "this #write would take the files the scene writes past {} in all (writing `{shown}`)",
+                    show_bytes(max)
+                ),
             )
-            .with_help("check the loop that writes it")
+            .with_label("the write that crossed the limit")
+            .with_help("check the loop that writes; raise the limit with --max-write SIZE (e.g. --max-write 1G)")
             .into());
         }
+        self.written_bytes += out.len() as u64;
         buf.extend_from_slice(&out);
         Ok(())
+    }
+
+    /// What a file opened for `append` already holds on disk: nothing when it
+    /// does not exist; read without following a link and within what is left of
+    /// `--max-write` (it is written again when closed).
+    fn read_for_append(&mut self, path: &Path, shown: &str, span: Span) -> R<Vec<u8>> {
+        let left = self.options.max_write.saturating_sub(self.written_bytes);
+        let data = match crate::files::open_regular_no_link(path)
+            .and_then(|f| crate::files::read_all(f, left))
+        {
+            Ok(d) => d,
+            Err(ReadError::Io(e)) if e.kind() == std::io::ErrorKind::NotFound => Vec::new(),
+            Err(ReadError::NotRegular(k)) => return Err(not_writable(shown, k, span).into()),
+            Err(ReadError::TooLarge { .. }) => {
+                self.stopped = true;
+                return Err(Diagnostic::error(
+                    codes::WRITE_SIZE,
+                    span,
+                    format!(
+                        "`{shown}` already holds more than the {} the scene may still write (appending rewrites it)",
+                        show_bytes(left)
+                    ),
+                )
+                .with_label("appended to here")
+                .with_help("write a new file instead, or raise the limit with --max-write SIZE (e.g. --max-write 1G)")
+                .into());
+            }
+            Err(e) => {
+                return Err(Diagnostic::error(
+                    codes::FILE_IO,
+                    span,
+                    format!("cannot read `{shown}` to append to it: {e}"),
+                )
+                .into())
+            }
+        };
+        self.written_bytes += data.len() as u64;
+        Ok(data)
     }
 
     /// When only blanks and commas are left of a file being read, closes it and
@@ -262,7 +320,14 @@ impl Evaluator<'_> {
         };
         let file = f.borrow();
         if self.options.write_files {
-            if let Err(e) = std::fs::write(&file.path, &buf) {
+            // A temporary file renamed over the name: a link or FIFO put there
+            // since #fopen is replaced, never written through.
+            let written = crate::files::create(&file.path, crate::files::Policy::FileNoLink)
+                .and_then(|mut out| {
+                    out.write_all(&buf)?;
+                    out.commit()
+                });
+            if let Err(e) = written {
                 return Err(Diagnostic::error(
                     codes::FILE_IO,
                     span,
@@ -277,6 +342,9 @@ impl Evaluator<'_> {
 
     /// The open file `name` stands for.
     fn file_value(&mut self, name: Sym, span: Span) -> R<Rc<RefCell<OpenFile>>> {
+        if self.files_failed.contains(&name) {
+            return Err(super::Fail::silent());
+        }
         match self.scope.get(name).map(|b| b.value.clone()) {
             Some(Value::File(f)) if !matches!(f.borrow().state, FileState::Closed) => Ok(f),
             Some(Value::File(_)) => Err(self.not_open(name, span).into()),
@@ -323,10 +391,14 @@ impl Evaluator<'_> {
             .with_help("check the file name, or add its folder with -I DIR")
             .into());
         };
-        match std::fs::read(&path) {
+        match crate::files::read_regular(&path, self.options.max_source_size) {
             Ok(d) => {
                 self.data_files.borrow_mut().push(path.clone());
                 Ok((path, d.into()))
+            }
+            Err(ReadError::NotRegular(k)) => Err(super::include::not_regular(name, k, span).into()),
+            Err(ReadError::TooLarge { limit }) => {
+                Err(super::include::too_large(name, limit, span).into())
             }
             Err(e) => Err(Diagnostic::error(
                 codes::FILE_NOT_FOUND,
@@ -398,7 +470,36 @@ impl Evaluator<'_> {
             .with_help("scenes write only under their own folder; allow more with --allow-path DIR")
             .into());
         }
-        Ok(path)
+        // The folder is canonical, so `..` and links there cannot leave it; the
+        // last name must not be a link (out of the folder) or a FIFO or device.
+        match Kind::of(&path) {
+            Ok(Kind::Missing | Kind::Regular) => Ok(path),
+            Ok(k) => Err(not_writable(name, k, span).into()),
+            Err(e) => {
+                Err(
+                    Diagnostic::error(codes::FILE_IO, span, format!("cannot write `{name}`: {e}"))
+                        .into(),
+                )
+            }
+        }
+    }
+}
+
+/// `#fopen … write` or `append` at a link, a FIFO, a device or a folder.
+fn not_writable(name: &str, kind: Kind, span: Span) -> Diagnostic {
+    let d = Diagnostic::error(
+        codes::NOT_REGULAR_FILE,
+        span,
+        format!("`{name}` is {}, not a regular file", kind.describe()),
+    );
+    if kind == Kind::Link {
+        d.with_label("a link: writing it could change a file elsewhere")
+            .with_help(
+                "a scene writes only regular files; remove the link, or write to another name",
+            )
+    } else {
+        d.with_label("not a file a scene may write")
+            .with_help("a scene writes only regular files; remove it, or write to another name")
     }
 }
 
