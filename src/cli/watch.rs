@@ -71,6 +71,11 @@ pub fn run(args: &WatchArgs) -> i32 {
             return EXIT_USAGE;
         }
     };
+    // As `rts render`: the image's folder is made (or the output refused) first.
+    if let Err(e) = super::outputs::prepare(&args.output, rts::files::Policy::Stream, "the image") {
+        eprintln!("error: {e}");
+        return EXIT_ERRORS;
+    }
     let (tx, rx) = mpsc::channel::<DebounceEventResult>();
     let mut debouncer = match new_debouncer(Duration::from_millis(args.debounce), tx) {
         Ok(d) => d,
@@ -79,6 +84,8 @@ pub fn run(args: &WatchArgs) -> i32 {
             return EXIT_ERRORS;
         }
     };
+    // Ctrl-C while a picture is being written leaves no temporary file.
+    super::interrupt::install();
     let mut watched_dirs: HashSet<PathBuf> = HashSet::new();
     loop {
         let files = render_once(args, &options);
