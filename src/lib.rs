@@ -1,11 +1,13 @@
 //! `rts`: a POV-Ray-compatible scene-description language and ray tracer.
 //!
 //! The modules follow the pipeline:
-//! `source → syntax::parse → AST → eval::eval → scene → build::build → render::render → output::write`.
+//! `source → syntax::parse → AST → eval::eval → scene → build::build → render::render → output::write`;
+//! `files` (reading and writing files safely) serves them all and imports none.
 
 pub mod build;
 pub mod diag;
 pub mod eval;
+pub mod files;
 pub mod ide;
 pub mod memory;
 pub mod output;

@@ -2,35 +2,32 @@
 //! encoder), an animated PNG (the png crate's APNG writer), or an MP4 through the
 //! `ffmpeg` program when it is installed.
 
-use std::fs::File;
-use std::io::BufWriter;
+use rts::files::{OutputFile, Policy};
+use std::io::BufReader;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// Reads a frame back as 8-bit RGB.
 fn read_rgb(path: &Path) -> Result<image::RgbImage, String> {
-    let img = image::ImageReader::open(path)
-        .and_then(|r| r.with_guessed_format())
+    let img = rts::files::open_regular(path)
+        .map_err(std::io::Error::other)
+        .and_then(|f| image::ImageReader::new(BufReader::new(f)).with_guessed_format())
         .map_err(|e| format!("cannot read frame `{}`: {e}", path.display()))?
         .decode()
         .map_err(|e| format!("cannot decode frame `{}`: {e}", path.display()))?;
     Ok(img.to_rgb8())
 }
 
-/// Writes `out` atomically: `write` fills a temporary file which is then renamed.
-fn atomic(out: &Path, write: impl FnOnce(File) -> Result<(), String>) -> Result<(), String> {
-    let name = out
-        .file_name()
-        .map_or_else(|| "out".into(), |n| n.to_string_lossy().into_owned());
-    let tmp = out.with_file_name(format!(".{name}.tmp-{}", std::process::id()));
-    let file = File::create(&tmp).map_err(|e| format!("cannot create `{}`: {e}", tmp.display()))?;
-    let r = write(file).and_then(|_| {
-        std::fs::rename(&tmp, out).map_err(|e| format!("cannot write `{}`: {e}", out.display()))
-    });
-    if r.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    r
+/// Writes `out` atomically: `write` fills a temporary file which is then renamed
+/// (or, for a FIFO or device, the stream itself; see [`rts::files::create`]).
+fn atomic(
+    out: &Path,
+    write: impl FnOnce(&mut OutputFile) -> Result<(), String>,
+) -> Result<(), String> {
+    let cannot = |e: std::io::Error| format!("cannot write `{}`: {e}", out.display());
+    let mut file = rts::files::create(out, Policy::Stream).map_err(cannot)?;
+    write(&mut file)?;
+    file.commit().map_err(cannot)
 }
 
 /// An animated GIF of `frames` at `fps` frames per second, looping forever.
@@ -38,7 +35,7 @@ pub fn gif(frames: &[PathBuf], fps: f64, out: &Path) -> Result<(), String> {
     use image::codecs::gif::{GifEncoder, Repeat};
     use image::{Delay, Frame};
     atomic(out, |file| {
-        let mut enc = GifEncoder::new_with_speed(BufWriter::new(file), 10);
+        let mut enc = GifEncoder::new_with_speed(file, 10);
         enc.set_repeat(Repeat::Infinite)
             .map_err(|e| e.to_string())?;
         let delay = Delay::from_numer_denom_ms(1000, fps.round().max(1.0) as u32);
@@ -60,7 +57,7 @@ pub fn apng(frames: &[PathBuf], fps: f64, out: &Path) -> Result<(), String> {
     let (w, h) = read_rgb(first)?.dimensions();
     atomic(out, |file| {
         let bad = |e: png::EncodingError| format!("cannot encode APNG `{}`: {e}", out.display());
-        let mut enc = png::Encoder::new(BufWriter::new(file), w, h);
+        let mut enc = png::Encoder::new(file, w, h);
         enc.set_color(png::ColorType::Rgb);
         enc.set_depth(png::BitDepth::Eight);
         enc.set_animated(frames.len() as u32, 0).map_err(bad)?;

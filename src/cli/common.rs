@@ -55,6 +55,8 @@ pub fn eval_options(args: &SceneArgs, width: u32, height: u32) -> Result<EvalOpt
         max_macro_calls: args.max_macro_calls,
         max_string_length: usize::try_from(args.max_string_length).unwrap_or(usize::MAX),
         max_errors: args.max_errors.max(1),
+        max_write: args.max_write,
+        max_source_size: args.max_source_size,
         ..EvalOptions::default()
     })
 }
@@ -74,13 +76,28 @@ pub struct Parsed {
     pub cache: eval::EvalCache,
 }
 
-/// Reads and parses `path`. `Err` when the file cannot be read at all.
-pub fn parse(path: &Path) -> Result<Parsed, String> {
+/// Reads and parses `path`, a regular file of at most `max_size` bytes. `Err` when
+/// the file cannot be read at all.
+pub fn parse(path: &Path, max_size: u64) -> Result<Parsed, String> {
     let mut sources = SourceMap::new();
     let name = path.display().to_string();
-    let id = match eval::load_file(&mut sources, path, name) {
+    let id = match eval::load_file_limited(&mut sources, path, name, max_size) {
         Ok(id) => id,
         Err(eval::LoadError::Io(e)) => return Err(format!("cannot read {}: {e}", path.display())),
+        Err(eval::LoadError::NotRegular(k)) => {
+            return Err(format!(
+                "cannot read {}: it is {}, not a regular file; give the scene's file",
+                path.display(),
+                k.describe()
+            ))
+        }
+        Err(eval::LoadError::TooLarge(limit)) => {
+            return Err(format!(
+                "cannot read {}: it is larger than {} (--max-source-size); check that it is the scene meant, or raise the limit with --max-source-size SIZE",
+                path.display(),
+                rts::memory::show_size(limit)
+            ))
+        }
         Err(eval::LoadError::Utf8(d)) => {
             let id = rts::span::FileId(0);
             return Ok(Parsed {
@@ -120,7 +137,7 @@ impl Parsed {
 
 /// Reads, parses and evaluates `path`. `Err` when the file cannot be read at all.
 pub fn load(path: &Path, options: &EvalOptions) -> Result<Loaded, String> {
-    let mut parsed = parse(path)?;
+    let mut parsed = parse(path, options.max_source_size)?;
     let (scene, diags) = parsed.eval(options);
     let mut diagnostics = std::mem::take(&mut parsed.diagnostics);
     diagnostics.extend(diags);

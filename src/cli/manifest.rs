@@ -11,6 +11,9 @@ use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
+/// The largest manifest read (one of a million frames takes about 100 MiB).
+const MAX_MANIFEST: u64 = 256 << 20;
+
 /// 64-bit FNV-1a: stable across runs, platforms and Rust versions.
 pub fn fnv64(bytes: &[u8]) -> u64 {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
@@ -34,7 +37,7 @@ pub fn scene_hash<'a>(
         all.extend_from_slice(f.text.as_bytes());
     }
     for path in data_files {
-        let bytes = std::fs::read(path).unwrap_or_default();
+        let bytes = rts::files::read_regular(path, u64::MAX).unwrap_or_default();
         all.extend_from_slice(path.to_string_lossy().as_bytes());
         all.extend_from_slice(&fnv64(&bytes).to_le_bytes());
     }
@@ -82,7 +85,7 @@ impl Manifest {
 
     /// Records `frame` as written to `path`.
     pub fn record(&mut self, frame: i64, path: &Path) -> std::io::Result<()> {
-        let bytes = std::fs::read(path)?;
+        let bytes = rts::files::read_regular(path, u64::MAX).map_err(std::io::Error::other)?;
         self.frames.insert(
             frame,
             FrameRecord {
@@ -96,12 +99,14 @@ impl Manifest {
         Ok(())
     }
 
-    /// Writes the manifest atomically.
+    /// Writes the manifest atomically (a temporary file renamed over it).
     pub fn save(&self, path: &Path) -> std::io::Result<()> {
+        use std::io::Write;
         let text = serde_json::to_string_pretty(self).map_err(std::io::Error::other)?;
-        let tmp = path.with_extension(format!("tmp-{}", std::process::id()));
-        std::fs::write(&tmp, text + "\n")?;
-        std::fs::rename(&tmp, path)
+        let mut f = rts::files::create(path, rts::files::Policy::FileOnly)?;
+        f.write_all(text.as_bytes())?;
+        f.write_all(b"\n")?;
+        f.commit()
     }
 }
 
@@ -133,8 +138,9 @@ pub fn load_all(pattern: &Path) -> Vec<Manifest> {
     for e in rd.flatten() {
         let f = e.file_name().to_string_lossy().into_owned();
         if f.starts_with(&name) && f.ends_with(".manifest.json") {
-            if let Ok(text) = std::fs::read_to_string(e.path()) {
-                if let Ok(m) = serde_json::from_str::<Manifest>(&text) {
+            // A manifest is small: a FIFO or a huge file of that name is passed over.
+            if let Ok(bytes) = rts::files::read_regular(&e.path(), MAX_MANIFEST) {
+                if let Ok(m) = serde_json::from_slice::<Manifest>(&bytes) {
                     out.push(m);
                 }
             }
@@ -153,7 +159,7 @@ pub fn complete(manifests: &[Manifest], key: &str, frame: i64, path: &Path) -> b
     if records.is_empty() {
         return false;
     }
-    let Ok(bytes) = std::fs::read(path) else {
+    let Ok(bytes) = rts::files::read_regular(path, u64::MAX) else {
         return false;
     };
     let hash = format!("{:016x}", fnv64(&bytes));

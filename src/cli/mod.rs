@@ -4,8 +4,10 @@ mod assemble;
 mod check;
 mod common;
 mod frame;
+mod interrupt;
 mod lsp;
 mod manifest;
+mod outputs;
 mod path_opts;
 mod render;
 mod sequence;
@@ -102,6 +104,14 @@ pub struct SceneArgs {
     /// Stop evaluating after this many errors.
     #[arg(long, value_name = "N", default_value_t = 100)]
     pub max_errors: usize,
+    /// Refuse a scene or #include file (or a file #fopen reads) larger than SIZE
+    /// (`64M`, `1G`).
+    #[arg(long, value_name = "SIZE", default_value = "256M", value_parser = size::parse_size)]
+    pub max_source_size: u64,
+    /// Stop when the files the scene writes with #write would hold more than SIZE
+    /// in all.
+    #[arg(long, value_name = "SIZE", default_value = "256M", value_parser = size::parse_size)]
+    pub max_write: u64,
     /// Evaluate (and render) the scene as a still at this `clock` value.
     #[arg(long, value_name = "T", allow_negative_numbers = true)]
     pub clock: Option<f64>,

@@ -160,6 +160,9 @@ fn plan(p: &PathArgs, scene_pt: Option<&PathTracing>, output: &Path) -> Result<P
     if !(p.save_every.is_finite() && p.save_every > 0.0) {
         return Err("--save-every must be a positive number of seconds".into());
     }
+    // Beside a streamed picture (`-o -`, a FIFO, /dev/null) there is no file to
+    // put OUT.ckpt or OUT.albedo.exr next to.
+    let streamed = super::outputs::is_stream(output);
     let (mut aov_albedo, mut aov_normal) = (false, false);
     for a in &p.aov {
         match a.trim() {
@@ -168,14 +171,28 @@ fn plan(p: &PathArgs, scene_pt: Option<&PathTracing>, output: &Path) -> Result<P
             other => return Err(format!("--aov {other}: expected albedo or normal")),
         }
     }
-    let checkpoint = if p.checkpoint.is_some() || p.resume || limit.is_some() {
-        Some(p.checkpoint.clone().unwrap_or_else(|| {
+    if (aov_albedo || aov_normal) && streamed {
+        return Err(format!(
+            "--aov writes OUT.albedo.exr and OUT.normal.exr beside the picture; `{}` is not a file: give -o FILE",
+            output.display()
+        ));
+    }
+    let checkpoint = match &p.checkpoint {
+        Some(c) => Some(c.clone()),
+        None if streamed && p.resume => {
+            return Err(format!(
+                "--resume: `{}` is not a file to find OUT.ckpt beside; give --checkpoint FILE",
+                output.display()
+            ))
+        }
+        // A time-limited render into a stream keeps no checkpoint unless asked.
+        None if streamed => None,
+        None if p.resume || limit.is_some() => {
             let mut s = output.as_os_str().to_owned();
             s.push(".ckpt");
-            PathBuf::from(s)
-        }))
-    } else {
-        None
+            Some(PathBuf::from(s))
+        }
+        None => None,
     };
     Ok(Plan {
         popts,
@@ -243,6 +260,13 @@ pub fn run(
         Ok(x) => x,
         Err(e) => return fail(e),
     };
+    // Checked (a FIFO or device refused, the folder made) before rendering.
+    if let Some(c) = &plan.checkpoint {
+        if let Err(e) = super::outputs::prepare(c, rts::files::Policy::FileOnly, "the checkpoint") {
+            eprintln!("error: {e}");
+            return Some(EXIT_ERRORS);
+        }
+    }
     if p.denoise && !cfg!(feature = "oidn") {
         return fail("--denoise needs rts built with `--features oidn` (and Intel Open Image Denoise installed); see docs/pathtracing.md".into());
     }
@@ -258,7 +282,8 @@ pub fn run(
         assumed_gamma: scene.global.assumed_gamma,
     };
     let crop = resolve_crop(settings, opts.width, opts.height);
-    let mut fp_text = std::fs::read(&args.scene_file).unwrap_or_default();
+    let mut fp_text =
+        rts::files::read_regular(&args.scene_file, args.scene.max_source_size).unwrap_or_default();
     fp_text.extend(format!("{:?}{:?}", args.scene.define, args.scene.clock).bytes());
     let key = checkpoint::Key::new(
         &opts,
@@ -280,12 +305,17 @@ pub fn run(
         Accum::new(crop)
     };
     let show_progress = !args.quiet && stats::stderr_is_terminal();
-    let write_all = |accum: &Accum, denoise: bool| -> Result<(), String> {
-        let mut film = accum.film();
-        if denoise {
-            film = denoise_film(&film, &accum.albedo_film(), &accum.normal_film())?;
+    // A partial picture is not written into a stream (a reader of `-o -` gets
+    // one picture), only the checkpoint.
+    let streamed = super::outputs::is_stream(output);
+    let write_all = |accum: &Accum, denoise: bool, partial: bool| -> Result<(), String> {
+        if !(partial && streamed) {
+            let mut film = accum.film();
+            if denoise {
+                film = denoise_film(&film, &accum.albedo_film(), &accum.normal_film())?;
+            }
+            rts::output::write_as(&film, output, format, &out).map_err(|e| e.to_string())?;
         }
-        rts::output::write_as(&film, output, format, &out).map_err(|e| e.to_string())?;
         let linear = OutputOptions {
             gamma: Gamma::Power(1.0),
             bit_depth: BitDepth::Eight,
@@ -351,7 +381,7 @@ pub fn run(
         Err(_) => return Some(EXIT_ERRORS),
     };
     let t3 = Instant::now();
-    if let Err(e) = write_all(&accum, p.denoise) {
+    if let Err(e) = write_all(&accum, p.denoise, false) {
         eprintln!("error: {e}");
         return Some(EXIT_ERRORS);
     }
@@ -390,16 +420,8 @@ pub fn run(
         let mut j = report.json();
         j["integrator"] = "path".into();
         j["samples_per_second"] = (rstats.samples as f64 / t_render.as_secs_f64().max(1e-9)).into();
-        let text = j.to_string();
-        let written = if path.as_os_str() == "-" {
-            println!("{text}");
-            Ok(())
-        } else {
-            std::fs::write(path, text + "\n")
-        };
-        if let Err(e) = written {
-            eprintln!("error: cannot write statistics `{}`: {e}", path.display());
-            return Some(EXIT_ERRORS);
+        if let Err(code) = stats::write_json(path, &j) {
+            return Some(code);
         }
     }
     Some(EXIT_OK)
@@ -454,7 +476,7 @@ fn progressive(
     accum: &mut Accum,
     rows: u64,
     progress: &Progress,
-    write_all: &dyn Fn(&Accum, bool) -> Result<(), String>,
+    write_all: &dyn Fn(&Accum, bool, bool) -> Result<(), String>,
     started: Instant,
 ) -> Result<RenderStats, String> {
     let mut total = RenderStats::default();
@@ -501,7 +523,7 @@ fn progressive(
         let n = pass.min(target - accum.samples);
         total += render_samples(sc, opts, settings, &plan.popts, accum, n, Some(progress));
         if last_save.elapsed() >= save_every && accum.samples < target {
-            write_all(accum, false)?;
+            write_all(accum, false, true)?;
             last_save = Instant::now();
         }
         pass = (pass * 2).min(64);

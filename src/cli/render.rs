@@ -1,7 +1,10 @@
 //! `rts render SCENE [-o OUT] [options]`: see docs/cli.md for every option.
 
 use super::frame::Renderer;
-use super::{common, sequence, stats, SceneArgs, EXIT_ERRORS, EXIT_OK, EXIT_USAGE};
+use super::{
+    common, interrupt, outputs, sequence, stats, MessageFormat, SceneArgs, EXIT_ERRORS, EXIT_OK,
+    EXIT_USAGE,
+};
 use rts::output::{Format, Gamma};
 use rts::render::{Antialias, Crop, Pass, Sampling, Settings};
 use std::path::PathBuf;
@@ -34,7 +37,9 @@ pub struct RenderArgs {
     #[arg(value_name = "SCENE")]
     pub scene_file: PathBuf,
     /// Output image; its extension (.png, .ppm, .exr, .hdr) picks the format unless
-    /// --format is given. Defaults to the scene's name in the current folder.
+    /// --format is given. Defaults to the scene's name in the current folder. `-`
+    /// writes the image to standard output; a FIFO or device (`/dev/null`) is
+    /// written directly (PNG unless --format says otherwise).
     #[arg(short = 'o', long = "output", value_name = "OUT")]
     pub output: Option<PathBuf>,
     /// Output format: png, ppm, exr or hdr (overrides the extension).
@@ -239,6 +244,10 @@ fn settings(args: &RenderArgs) -> Result<Settings, String> {
 fn output_target(args: &RenderArgs) -> Result<(PathBuf, Format), String> {
     match (&args.output, args.format) {
         (Some(p), Some(f)) => Ok((p.clone(), f)),
+        // `-`, /dev/null, a FIFO: no extension to go by.
+        (Some(p), None) if outputs::is_stream(p) && Format::from_path(p).is_none() => {
+            Ok((p.clone(), Format::Png))
+        }
         (Some(p), None) => match Format::from_path(p) {
             Some(f) => Ok((p.clone(), f)),
             None => Err(format!(
@@ -259,9 +268,39 @@ fn output_target(args: &RenderArgs) -> Result<(PathBuf, Format), String> {
     }
 }
 
+/// Checks the files the render will write before anything else is done: the
+/// image's format, `-o -` against other uses of standard output, and every
+/// output's folder (created when missing).
+fn check_outputs(args: &RenderArgs) -> Result<(), i32> {
+    let (output, format) = output_target(args).map_err(usage)?;
+    if format == Format::Exr && outputs::is_stream(&output) {
+        return Err(usage(format!(
+            "OpenEXR is written out of order and needs a regular file, and `{}` is a stream: use -o FILE.exr, or another --format",
+            output.display()
+        )));
+    }
+    if output.as_os_str() == "-" {
+        if args.stats_json.as_deref() == Some(std::path::Path::new("-")) {
+            return Err(usage(
+                "-o - and --stats-json - both write to standard output: give --stats-json a file",
+            ));
+        }
+        if args.scene.message_format != MessageFormat::Human {
+            return Err(usage(
+                "-o - writes the image to standard output, where --message-format short and json print diagnostics: use --message-format human (standard error), or -o FILE",
+            ));
+        }
+    }
+    outputs::prepare_all(args, &output).map_err(|e| {
+        eprintln!("error: {e}");
+        EXIT_ERRORS
+    })
+}
+
 /// Renders the scene: a still, or the frames of its timeline.
 pub fn run(args: &RenderArgs) -> i32 {
     let t_start = Instant::now();
+    interrupt::install();
     if args.width == 0
         || args.height == 0
         || u64::from(args.width) * u64::from(args.height) > MAX_PIXELS
@@ -289,6 +328,9 @@ pub fn run(args: &RenderArgs) -> i32 {
         Ok(s) => s,
         Err(e) => return usage(e),
     };
+    if let Err(code) = check_outputs(args) {
+        return code;
+    }
     if args.preview {
         settings.sampling = Sampling::Centre;
     }
@@ -305,7 +347,7 @@ pub fn run(args: &RenderArgs) -> i32 {
         Err(e) => return usage(e),
     };
     let t0 = Instant::now();
-    let mut parsed = match common::parse(&args.scene_file) {
+    let mut parsed = match common::parse(&args.scene_file, args.scene.max_source_size) {
         Ok(p) => p,
         Err(e) => {
             eprintln!("error: {e}");
@@ -458,16 +500,8 @@ pub fn run(args: &RenderArgs) -> i32 {
         eprint!("{}", report.human());
     }
     if let Some(path) = &args.stats_json {
-        let text = report.json().to_string();
-        let written = if path.as_os_str() == "-" {
-            println!("{text}");
-            Ok(())
-        } else {
-            std::fs::write(path, text + "\n")
-        };
-        if let Err(e) = written {
-            eprintln!("error: cannot write statistics `{}`: {e}", path.display());
-            return EXIT_ERRORS;
+        if let Err(code) = stats::write_json(path, &report.json()) {
+            return code;
         }
     }
     EXIT_OK

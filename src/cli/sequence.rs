@@ -277,44 +277,34 @@ fn options_text(
     )
 }
 
-/// Removes the temporary files a killed run left next to the frames (frame and
-/// manifest `.tmp-PID` files whose process is gone).
-fn remove_stale_temporaries(pattern: &Path, frames: &[i64]) {
-    let dir = match pattern.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    let names: std::collections::HashSet<String> = frames
+/// Removes the temporary files a run killed without warning (power cut, SIGKILL)
+/// left beside this run's frames and manifest: `.NAME.XXXXXX.tmp`, NAME one of
+/// `files` (a run stopped by Ctrl-C or `kill` removes its own). Frames of other
+/// shards are left alone: they may be rendering now.
+fn remove_stale_temporaries(dir: &Path, files: &[PathBuf]) {
+    let names: std::collections::HashSet<String> = files
         .iter()
-        .filter_map(|f| {
-            frame_path(pattern, *f)
-                .file_name()
-                .map(|n| n.to_string_lossy().into_owned())
-        })
-        .chain(
-            pattern
-                .file_name()
-                .map(|n| n.to_string_lossy().into_owned()),
-        )
+        .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
         .collect();
-    let Ok(rd) = std::fs::read_dir(&dir) else {
+    let dir = if dir.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        dir
+    };
+    let Ok(rd) = std::fs::read_dir(dir) else {
         return;
     };
     for e in rd.flatten() {
         let name = e.file_name().to_string_lossy().into_owned();
-        let Some((base, pid)) = name.rsplit_once(".tmp-") else {
+        let Some((base, random)) = name
+            .strip_prefix('.')
+            .and_then(|n| n.strip_suffix(".tmp"))
+            .and_then(|n| n.rsplit_once('.'))
+        else {
             continue;
         };
-        let Ok(pid) = pid.parse::<u32>() else {
-            continue;
-        };
-        let base = base.trim_start_matches('.');
-        let ours = names.contains(base)
-            || base
-                .strip_suffix(".manifest")
-                .is_some_and(|b| names.iter().any(|n| b.starts_with(n.as_str())));
-        let alive = pid == std::process::id() || Path::new(&format!("/proc/{pid}")).exists();
-        if ours && !alive {
+        let temporary = random.len() == 6 && random.chars().all(|c| c.is_ascii_alphanumeric());
+        if temporary && names.contains(base) && e.file_type().is_ok_and(|t| t.is_file()) {
             let _ = std::fs::remove_file(e.path());
         }
     }
@@ -341,6 +331,13 @@ pub fn run(
             PathBuf::from(format!("{stem}.png"))
         }
     };
+    if super::outputs::is_stream(&output) {
+        eprintln!(
+            "error: a sequence is written to files, one per frame, and `{}` is not a file: give a pattern such as -o frames/shot_####.png",
+            output.display()
+        );
+        return EXIT_USAGE;
+    }
     let pattern = pattern_for(&output, last);
     let format = match args
         .format
@@ -362,7 +359,6 @@ pub fn run(
         }
     }
     let all: Vec<i64> = (first..=last).collect();
-    remove_stale_temporaries(&pattern, &all);
     let mine: Vec<i64> = match plan.shard {
         Some((i, n)) => all
             .iter()
@@ -377,6 +373,20 @@ pub fn run(
         options_text(r, base, &t, format),
     );
     let man_path = manifest::path_for(&pattern, plan.shard);
+    // Every file this run writes must be a regular file (or none yet): a FIFO
+    // there would block, a device would be written into.
+    let files: Vec<PathBuf> = mine
+        .iter()
+        .map(|f| frame_path(&pattern, *f))
+        .chain([man_path.clone()])
+        .collect();
+    for p in &files {
+        if let Err(e) = rts::files::target(p, rts::files::Policy::FileOnly) {
+            eprintln!("error: cannot write `{}`: {e}", p.display());
+            return EXIT_ERRORS;
+        }
+    }
+    remove_stale_temporaries(pattern.parent().unwrap_or(Path::new(".")), &files);
     let existing = manifest::load_all(&pattern);
     // Complete frames recorded for the same scene and options stay listed.
     for m in &existing {
@@ -409,6 +419,9 @@ pub fn run(
         let writer = s.spawn(move || -> Result<(), String> {
             let mut man = man;
             for (f, path, film, out) in rx {
+                // A FIFO or device put at a frame's name while rendering is refused.
+                rts::files::target(&path, rts::files::Policy::FileOnly)
+                    .map_err(|e| format!("cannot write `{}`: {e}", path.display()))?;
                 rts::output::write_as(&film, &path, format, &out).map_err(|e| e.to_string())?;
                 man.record(f, &path)
                     .and_then(|_| man.save(&writer_man_path))

@@ -44,6 +44,21 @@ pub fn progress_bar(progress: &Progress, done: &AtomicBool) {
     bar.finish_and_clear();
 }
 
+/// Writes `json` as one line to `path` (`-`: standard output) as every output is
+/// written (see [`rts::files`]); `Err` is the exit status after the message.
+pub fn write_json(path: &Path, json: &Value) -> Result<(), i32> {
+    use std::io::Write;
+    rts::files::create(path, rts::files::Policy::Stream)
+        .and_then(|mut f| {
+            writeln!(f, "{json}")?;
+            f.commit()
+        })
+        .map_err(|e| {
+            eprintln!("error: cannot write statistics `{}`: {e}", path.display());
+            super::EXIT_ERRORS
+        })
+}
+
 /// The peak resident memory of this process (`VmHWM` of /proc/self/status), when
 /// the system tells it.
 pub fn peak_memory_bytes() -> Option<u64> {

@@ -71,6 +71,11 @@ pub fn run(args: &WatchArgs) -> i32 {
             return EXIT_USAGE;
         }
     };
+    // As `rts render`: the image's folder is made (or the output refused) first.
+    if let Err(e) = super::outputs::prepare(&args.output, rts::files::Policy::Stream, "the image") {
+        eprintln!("error: {e}");
+        return EXIT_ERRORS;
+    }
     let (tx, rx) = mpsc::channel::<DebounceEventResult>();
     let mut debouncer = match new_debouncer(Duration::from_millis(args.debounce), tx) {
         Ok(d) => d,
@@ -79,12 +84,14 @@ pub fn run(args: &WatchArgs) -> i32 {
             return EXIT_ERRORS;
         }
     };
+    // Ctrl-C while a picture is being written leaves no temporary file.
+    super::interrupt::install();
     let mut watched_dirs: HashSet<PathBuf> = HashSet::new();
     loop {
         let files = render_once(args, &options);
         // Reading files makes events too (and editors touch files without changing
         // them): only a change of contents starts a new render.
-        let seen = fingerprint(&files);
+        let seen = fingerprint(&files, args.scene.max_source_size);
         // Watch the folder of every file read (new includes may have appeared).
         for dir in files.iter().filter_map(|f| f.parent()) {
             if watched_dirs.insert(dir.to_path_buf()) {
@@ -106,7 +113,7 @@ pub fn run(args: &WatchArgs) -> i32 {
                 let p = e.path.canonicalize().unwrap_or_else(|_| e.path.clone());
                 files.contains(&p)
             });
-            if hit && fingerprint(&files) != seen {
+            if hit && fingerprint(&files, args.scene.max_source_size) != seen {
                 // Collect any further events of the same save.
                 while rx.try_recv().is_ok() {}
                 break;
@@ -207,11 +214,11 @@ fn render_once(args: &WatchArgs, options: &rts::eval::EvalOptions) -> HashSet<Pa
 
 /// A hash of each file's contents (`None`: unreadable), to tell real changes from
 /// events that changed nothing.
-fn fingerprint(files: &HashSet<PathBuf>) -> HashMap<PathBuf, Option<u64>> {
+fn fingerprint(files: &HashSet<PathBuf>, limit: u64) -> HashMap<PathBuf, Option<u64>> {
     files
         .iter()
         .map(|f| {
-            let h = std::fs::read(f).ok().map(|bytes| {
+            let h = rts::files::read_regular(f, limit).ok().map(|bytes| {
                 let mut h = DefaultHasher::new();
                 bytes.hash(&mut h);
                 h.finish()

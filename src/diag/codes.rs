@@ -71,6 +71,9 @@ pub const FILE_NOT_ALLOWED: &str = "rts::io::file_not_allowed";
 /// `#fopen`, `#read`, `#write` or `#fclose` misused: a file not open, opened
 /// the wrong way, unreadable data, or a file that cannot be written.
 pub const FILE_IO: &str = "rts::io::file_io";
+/// A file a scene names that is not a regular file: a FIFO, a device or a folder
+/// read, or a link or non-regular file at a name `#fopen` writes.
+pub const NOT_REGULAR_FILE: &str = "rts::io::not_a_regular_file";
 /// A file that includes itself, directly or not.
 pub const INCLUDE_CYCLE: &str = "rts::eval::include_cycle";
 /// Too many loop iterations.
@@ -79,6 +82,11 @@ pub const LOOP_LIMIT: &str = "rts::limit::loop_iterations";
 pub const RECURSION_LIMIT: &str = "rts::limit::macro_recursion";
 /// Includes nested too deeply.
 pub const INCLUDE_DEPTH: &str = "rts::limit::include_depth";
+/// A scene or `#include`d file (or a file `#fopen` reads) larger than
+/// `--max-source-size`.
+pub const SOURCE_SIZE: &str = "rts::limit::source_size";
+/// `#write` past `--max-write` bytes in all files together.
+pub const WRITE_SIZE: &str = "rts::limit::write_size";
 /// An array larger than allowed.
 pub const ARRAY_SIZE: &str = "rts::limit::array_size";
 /// Objects nested deeper than `--max-object-depth` (CSG in CSG, `clipped_by`).

@@ -38,7 +38,7 @@ impl Evaluator<'_> {
             .with_help("give a Wavefront .obj file with `v` and `f` lines")
             .into()
         };
-        let file = std::fs::File::open(&path).map_err(|e| bad(e.to_string()))?;
+        let file = crate::files::open_regular(&path).map_err(|e| bad(e.to_string()))?;
         let opts = tobj::LoadOptions {
             triangulate: true,
             single_index: false,
@@ -115,7 +115,7 @@ impl Evaluator<'_> {
             .with_help("give a .ply file with `vertex` and `face` elements")
             .into()
         };
-        let file = std::fs::File::open(&path).map_err(|e| bad(e.to_string()))?;
+        let file = crate::files::open_regular(&path).map_err(|e| bad(e.to_string()))?;
         let ply = Parser::<DefaultElement>::new()
             .read_ply(&mut std::io::BufReader::new(file))
             .map_err(|e| bad(e.to_string()))?;

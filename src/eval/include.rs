@@ -4,6 +4,7 @@
 use super::cursor::Sink;
 use super::{Evaluator, R};
 use crate::diag::{codes, did_you_mean, Diagnostic, Label};
+use crate::files::Kind;
 use crate::source::{FileAccess, SourceMap};
 use crate::span::{FileId, Span};
 use std::path::{Path, PathBuf};
@@ -90,14 +91,38 @@ pub fn find_include(
 pub enum LoadError {
     /// The file could not be read.
     Io(std::io::Error),
+    /// The path leads to a FIFO, a device or a folder, not a regular file.
+    NotRegular(crate::files::Kind),
+    /// The file is larger than the limit (bytes; `--max-source-size`).
+    TooLarge(u64),
     /// The file is not UTF-8; it was added to the map (lossily) so the diagnostic can
     /// show it, and this is the ready diagnostic.
     Utf8(Box<Diagnostic>),
 }
 
-/// Reads a file into the source map, checking that it is UTF-8.
+/// The largest source file [`load_file`] reads (256 MiB; `--max-source-size`).
+pub const MAX_SOURCE_SIZE: u64 = 256 << 20;
+
+/// Reads a file of at most [`MAX_SOURCE_SIZE`] bytes into the source map (see
+/// [`load_file_limited`]).
 pub fn load_file(sources: &mut SourceMap, path: &Path, name: String) -> Result<FileId, LoadError> {
-    let bytes = std::fs::read(path).map_err(LoadError::Io)?;
+    load_file_limited(sources, path, name, MAX_SOURCE_SIZE)
+}
+
+/// Reads a file into the source map, checking that it is a regular file of at most
+/// `limit` bytes (a FIFO or device is refused without waiting on it) and UTF-8.
+pub fn load_file_limited(
+    sources: &mut SourceMap,
+    path: &Path,
+    name: String,
+    limit: u64,
+) -> Result<FileId, LoadError> {
+    use crate::files::ReadError;
+    let bytes = crate::files::read_regular(path, limit).map_err(|e| match e {
+        ReadError::NotRegular(k) => LoadError::NotRegular(k),
+        ReadError::TooLarge { limit } => LoadError::TooLarge(limit),
+        ReadError::Io(e) => LoadError::Io(e),
+    })?;
     match String::from_utf8(bytes) {
         Ok(text) => Ok(sources.add(name, Some(path.to_path_buf()), text)),
         Err(e) => {
@@ -114,6 +139,40 @@ pub fn load_file(sources: &mut SourceMap, path: &Path, name: String) -> Result<F
             .with_help("save the file as UTF-8");
             Err(LoadError::Utf8(Box::new(d)))
         }
+    }
+}
+
+/// A file the scene names that is a FIFO, a device or something else that is not a
+/// regular file.
+pub(crate) fn not_regular(shown: &str, kind: Kind, span: Span) -> Diagnostic {
+    Diagnostic::error(
+        codes::NOT_REGULAR_FILE,
+        span,
+        format!("`{shown}` is {}, not a regular file", kind.describe()),
+    )
+    .with_label("not a file rts reads")
+    .with_help("name a regular file: rts does not read from pipes, devices or folders")
+}
+
+/// A source file (or a file `#fopen` reads) larger than `--max-source-size`.
+pub(crate) fn too_large(shown: &str, limit: u64, span: Span) -> Diagnostic {
+    Diagnostic::error(
+        codes::SOURCE_SIZE,
+        span,
+        format!("`{shown}` is larger than {}", show_bytes(limit)),
+    )
+    .with_label("too large to read")
+    .with_help(
+        "check that this is the file meant; raise the limit with --max-source-size SIZE (e.g. 1G)",
+    )
+}
+
+/// `bytes` in MiB when it is a whole number of them, else in bytes.
+pub(crate) fn show_bytes(bytes: u64) -> String {
+    if bytes >= 1 << 20 && bytes.is_multiple_of(1 << 20) {
+        format!("{} MiB", bytes >> 20)
+    } else {
+        format!("{bytes} bytes")
     }
 }
 
@@ -215,7 +274,10 @@ impl Evaluator<'_> {
             let shown = path.display().to_string();
             let shown = shown.strip_prefix("./").unwrap_or(&shown).to_string();
             tried.push(shown.clone());
-            if !path.is_file() {
+            // Missing files and folders are passed over; a FIFO or device found
+            // here is refused below (once it is known to be in the sandbox).
+            let kind = crate::files::Kind::followed(&path);
+            if matches!(kind, Ok(Kind::Missing | Kind::Folder) | Err(_)) {
                 continue;
             }
             let canon = path.canonicalize().unwrap_or(path.clone());
@@ -232,6 +294,11 @@ impl Evaluator<'_> {
                 .with_label("outside the scene's folders")
                 .with_help("scenes read only from their own folder, -I folders and the built-in library; allow more with --allow-path DIR")
                 .into());
+            }
+            if let Ok(k) = kind {
+                if k != Kind::Regular {
+                    return Err(not_regular(&shown, k, span).into());
+                }
             }
             return Ok(Some((canon, shown)));
         }
@@ -277,9 +344,12 @@ impl Evaluator<'_> {
             if let Some(id) = self.sources.find_path(&canon) {
                 return Ok(id);
             }
-            return match load_file(self.sources, &canon, shown.clone()) {
+            let limit = self.options.max_source_size;
+            return match load_file_limited(self.sources, &canon, shown.clone(), limit) {
                 Ok(id) => Ok(id),
                 Err(LoadError::Utf8(d)) => Err((*d).into()),
+                Err(LoadError::NotRegular(k)) => Err(not_regular(&shown, k, span).into()),
+                Err(LoadError::TooLarge(limit)) => Err(too_large(&shown, limit, span).into()),
                 Err(LoadError::Io(e)) => Err(Diagnostic::error(
                     codes::FILE_NOT_FOUND,
                     span,

@@ -15,6 +15,7 @@ mod camera_path;
 mod cursor;
 mod directives;
 mod exprs;
+mod file_data;
 pub mod file_io;
 pub mod function;
 mod import;
@@ -50,7 +51,9 @@ mod warps;
 
 pub use budget::Interrupt;
 pub use builtins::{is_function as is_builtin_function, BUILTIN_NAMES};
-pub use include::{find_include, load_file, search_dirs, LoadError, STDLIB};
+pub use include::{
+    find_include, load_file, load_file_limited, search_dirs, LoadError, MAX_SOURCE_SIZE, STDLIB,
+};
 pub use keyframe::{ease, Easing};
 pub use spline::{Spline, SplineKind};
 pub use value::Value;
@@ -120,6 +123,11 @@ pub struct EvalOptions {
     pub max_errors: usize,
     /// How an editor stops an evaluation early.
     pub interrupt: Interrupt,
+    /// Most bytes the files `#write` makes may hold, all together (`--max-write`).
+    pub max_write: u64,
+    /// Largest `#include`d file, and file `#fopen` reads, in bytes
+    /// (`--max-source-size`).
+    pub max_source_size: u64,
 }
 
 impl Default for EvalOptions {
@@ -149,6 +157,8 @@ impl Default for EvalOptions {
             max_string_length: 64 << 20,
             max_errors: 100,
             interrupt: Interrupt::default(),
+            max_write: 256 << 20,
+            max_source_size: MAX_SOURCE_SIZE,
         }
     }
 }
@@ -245,8 +255,10 @@ pub fn eval_cached(
         declaring_function: None,
         pending_function: None,
         written: Default::default(),
+        written_bytes: 0,
         open_writes: Vec::new(),
         files_seen: Default::default(),
+        files_failed: Default::default(),
         deprecated: Default::default(),
         pending_pattern: None,
         pattern_items: false,
@@ -338,6 +350,9 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) pending_function: Option<Arc<function::Function>>,
     /// Files written by `#write` in this evaluation (see `file_io.rs`).
     pub(crate) written: file_io::Overlay,
+    /// Bytes the files being written hold so far, all together (see
+    /// [`EvalOptions::max_write`]).
+    pub(crate) written_bytes: u64,
     /// Files opened for writing, closed at the end if the scene does not.
     pub(crate) open_writes: Vec<std::rc::Rc<std::cell::RefCell<file_io::OpenFile>>>,
     /// Names declared `deprecated`, with whether a `once` warning was given.
@@ -345,6 +360,9 @@ pub(crate) struct Evaluator<'a> {
         rustc_hash::FxHashMap<crate::syntax::Sym, (ast::Deprecation, std::cell::Cell<bool>)>,
     /// Names ever opened by `#fopen` (closing one twice is allowed).
     pub(crate) files_seen: rustc_hash::FxHashSet<crate::syntax::Sym>,
+    /// Names whose last `#fopen` failed (and was reported): their `#read` and
+    /// `#write` report nothing more.
+    pub(crate) files_failed: rustc_hash::FxHashSet<crate::syntax::Sym>,
     /// The pattern of a pattern block (`pigment_pattern { … }`) just met among a
     /// pigment's, normal's or texture's items (see `block_pattern_token`).
     pub(crate) pending_pattern: Option<crate::scene::PatternKind>,

@@ -584,7 +584,7 @@ impl Evaluator<'_> {
             interpolate = n as u8;
         }
         let path = self.data_file(&name, span, "density file")?;
-        let bytes = std::fs::read(&path).map_err(|e| {
+        let bytes = crate::files::read_regular(&path, u64::MAX).map_err(|e| {
             Fail::from(Diagnostic::error(
                 codes::FILE_IO,
                 span,

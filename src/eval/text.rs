@@ -105,7 +105,7 @@ impl Evaluator<'_> {
             );
         }
         let font = self.fonts.entry(path.clone()).or_insert_with(|| {
-            std::fs::read(&path)
+            crate::files::read_regular(&path, u64::MAX)
                 .map_err(|e| e.to_string())
                 .and_then(Font::parse)
         });

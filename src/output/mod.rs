@@ -6,13 +6,13 @@ mod gamma;
 pub use format::{Format, ParseFormatError};
 pub use gamma::{decode_working, to_file, Gamma, ParseGammaError};
 
+use crate::files;
 use crate::render::Film;
 use image::codecs::hdr::HdrEncoder;
 use image::codecs::openexr::OpenExrEncoder;
 use image::codecs::png::PngEncoder;
 use image::{ExtendedColorType, ImageEncoder};
 use std::fmt;
-use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
@@ -98,13 +98,16 @@ pub fn linear_samples(film: &Film, opts: &OutputOptions) -> Vec<f32> {
 
 /// Writes `film` at `path` in the format its extension names (PNG when the
 /// extension is not one of [`Format`]'s), atomically: the image goes to a
-/// temporary file in the same directory which is then renamed over `path`.
+/// temporary file in the same directory which is then renamed over `path`. A FIFO
+/// or character device is written directly, and `-` is standard output (see
+/// [`crate::files::Policy::Stream`]).
 pub fn write(film: &Film, path: &Path, opts: &OutputOptions) -> Result<(), OutputError> {
     let format = Format::from_path(path).unwrap_or(Format::Png);
     write_as(film, path, format, opts)
 }
 
-/// Writes `film` at `path` as `format`, atomically. PNG and PPM hold
+/// Writes `film` at `path` as `format`, atomically (or into a stream, as
+/// [`write`]). PNG and PPM hold
 /// gamma-encoded 8- or 16-bit values (`opts.bit_depth`, `opts.gamma`); EXR (32-bit
 /// float) and Radiance HDR hold linear light, unclamped, and ignore `gamma` and
 /// `bit_depth`.
@@ -121,9 +124,8 @@ pub fn write_as(
     if film.width == 0 || film.height == 0 {
         return Err(err("the image is empty".into()));
     }
-    let tmp = temp_path(path);
     let result = (|| -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
-        let file = File::create(&tmp)?;
+        let file = files::create(path, files::Policy::Stream)?;
         let mut out = BufWriter::new(file);
         match format {
             Format::Png | Format::Ppm => {
@@ -158,15 +160,9 @@ pub fn write_as(
                 HdrEncoder::new(&mut out).encode(&px, film.width as usize, film.height as usize)?;
             }
         }
-        out.flush()?;
-        out.get_ref().sync_all()?;
-        drop(out);
-        std::fs::rename(&tmp, path)?;
+        out.into_inner().map_err(|e| e.into_error())?.commit()?;
         Ok(())
     })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
     result.map_err(err)
 }
 
@@ -207,17 +203,5 @@ fn integer_samples(film: &Film, opts: &OutputOptions) -> (Vec<u8>, ExtendedColor
                 .collect(),
             ExtendedColorType::Rgb16,
         ),
-    }
-}
-
-/// `dir/.name.tmp-PID` next to `path`.
-fn temp_path(path: &Path) -> PathBuf {
-    let name = path
-        .file_name()
-        .map_or_else(|| "image".into(), |n| n.to_string_lossy().into_owned());
-    let tmp = format!(".{name}.tmp-{}", std::process::id());
-    match path.parent() {
-        Some(dir) => dir.join(tmp),
-        None => PathBuf::from(tmp),
     }
 }

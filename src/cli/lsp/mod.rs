@@ -134,9 +134,16 @@ fn uri_of(path: &Path) -> Option<lsp::Uri> {
         let (_, text) = rts::eval::STDLIB.iter().find(|(n, _)| *n == name)?;
         let dir = stdlib_dir();
         let file = dir.join(name);
-        if std::fs::read_to_string(&file).ok().as_deref() != Some(*text) {
+        // In the shared temporary folder: read a regular file only (never wait on
+        // a FIFO put there), and replace it by a rename, never writing through a
+        // link someone else made.
+        let current = rts::files::read_regular(&file, text.len() as u64).ok();
+        if current.as_deref() != Some(text.as_bytes()) {
+            use std::io::Write;
             std::fs::create_dir_all(&dir).ok()?;
-            std::fs::write(&file, text).ok()?;
+            let mut out = rts::files::create(&file, rts::files::Policy::FileNoLink).ok()?;
+            out.write_all(text.as_bytes()).ok()?;
+            out.commit().ok()?;
         }
         return lsp::Uri::from_file_path(&file);
     }

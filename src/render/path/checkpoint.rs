@@ -21,7 +21,7 @@ use super::{Accum, PathOptions};
 use crate::render::{Crop, RenderOptions, Settings};
 use crate::scene::PixelFilter;
 use glam::DVec3;
-use std::io::{Read, Write};
+use std::io::Write;
 use std::path::Path;
 
 const MAGIC: &[u8; 8] = b"RTSPATH1";
@@ -98,7 +98,8 @@ pub fn fingerprint(bytes: &[u8]) -> u64 {
     h
 }
 
-/// Writes `accum` with `key` to `path` (atomically: a temporary file renamed).
+/// Writes `accum` with `key` to `path` (atomically: a temporary file renamed; a
+/// FIFO or device there is refused).
 pub fn save(path: &Path, key: &Key, accum: &Accum) -> std::io::Result<()> {
     let mut b = key.header();
     b.extend_from_slice(&accum.samples.to_le_bytes());
@@ -109,22 +110,20 @@ pub fn save(path: &Path, key: &Key, accum: &Accum) -> std::io::Result<()> {
             }
         }
     }
-    let tmp = path.with_extension("ckpt.tmp");
-    {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(&b)?;
-        f.sync_all()?;
-    }
-    std::fs::rename(&tmp, path)
+    let mut f = crate::files::create(path, crate::files::Policy::FileOnly)?;
+    f.write_all(&b)?;
+    f.commit()
 }
 
 /// Reads a checkpoint written for `key`; an error says why it cannot be used.
 pub fn load(path: &Path, key: &Key) -> Result<Accum, String> {
-    let mut b = Vec::new();
-    std::fs::File::open(path)
-        .and_then(|mut f| f.read_to_end(&mut b))
-        .map_err(|e| format!("cannot read checkpoint `{}`: {e}", path.display()))?;
     let head = key.header();
+    let c = key.crop;
+    let pixels = u64::from(c.x1.saturating_sub(c.x0)) * u64::from(c.y1.saturating_sub(c.y0));
+    // Nothing longer than a checkpoint of this size is read (nor a FIFO waited on).
+    let size = head.len() as u64 + 4 + pixels * 9 * 8;
+    let b = crate::files::read_regular(path, size)
+        .map_err(|e| format!("cannot read checkpoint `{}`: {e}", path.display()))?;
     if b.len() < head.len() + 4 || &b[..8] != MAGIC {
         return Err(format!(
             "`{}` is not an rts path tracing checkpoint",
