@@ -48,6 +48,7 @@ pub fn eval_options(args: &SceneArgs, width: u32, height: u32) -> Result<EvalOpt
         max_loop_iterations: args.max_loop_iterations,
         max_macro_depth: args.max_macro_depth,
         max_array_size: args.max_array_size,
+        max_image_pixels: args.max_image_pixels,
         ..EvalOptions::default()
     })
 }

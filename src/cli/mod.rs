@@ -72,6 +72,10 @@ pub struct SceneArgs {
     /// Refuse arrays with more elements than this.
     #[arg(long, value_name = "N", default_value_t = 1 << 22)]
     pub max_array_size: usize,
+    /// Most pixels the image files a scene reads may hold together (each file
+    /// once); checked before decoding.
+    #[arg(long, value_name = "N", default_value_t = rts::eval::DEFAULT_MAX_IMAGE_PIXELS)]
+    pub max_image_pixels: u64,
     /// Evaluate (and render) the scene as a still at this `clock` value.
     #[arg(long, value_name = "T", allow_negative_numbers = true)]
     pub clock: Option<f64>,
