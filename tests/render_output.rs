@@ -2,7 +2,7 @@
 
 mod render_support;
 
-use glam::DVec3;
+use glam::{DVec3, Vec3};
 use render_support::*;
 use rts::build::build;
 use rts::output::{write, write_as, BitDepth, Format, Gamma, OutputOptions};
@@ -89,15 +89,11 @@ fn same_bits_on_one_and_four_threads() {
     let a = render_on(1, &sc);
     let b = render_on(4, &sc);
     assert_eq!(a.pixels.len(), 96 * 72);
-    let bits = |f: &Film| {
-        f.pixels
-            .iter()
-            .flat_map(|p| p.to_array().map(f64::to_bits))
-            .collect::<Vec<_>>()
-    };
     assert_eq!(bits(&a), bits(&b));
     // Something is actually visible: not all background.
-    assert!(a.pixels.iter().any(|p| *p != sc.background.rgb));
+    assert!(a
+        .colours()
+        .any(|p| p != sc.background.rgb.as_vec3().as_dvec3()));
 }
 
 fn tmp_dir(name: &str) -> std::path::PathBuf {
@@ -110,7 +106,7 @@ fn grey_film() -> Film {
     Film {
         width: 2,
         height: 1,
-        pixels: vec![DVec3::splat(0.5), DVec3::new(2.0, -1.0, 0.25)],
+        pixels: vec![Vec3::splat(0.5), Vec3::new(2.0, -1.0, 0.25)],
     }
 }
 
@@ -186,10 +182,10 @@ fn render_settings_on(threads: usize, sc: &Scene, settings: &Settings) -> Render
     })
 }
 
-fn bits(f: &Film) -> Vec<u64> {
+fn bits(f: &Film) -> Vec<u32> {
     f.pixels
         .iter()
-        .flat_map(|p| p.to_array().map(f64::to_bits))
+        .flat_map(|p| p.to_array().map(f32::to_bits))
         .collect()
 }
 
@@ -338,7 +334,7 @@ fn debug_passes_show_distance_normal_and_pigment() {
     // brightest and still below white.
     let auto = pass(Pass::Depth { max: None });
     let c = auto.get(16, 16).x;
-    assert!(c > 0.0 && c < 1.0 && auto.pixels.iter().all(|p| p.x <= c));
+    assert!(c > 0.0 && c < 1.0 && auto.colours().all(|p| p.x <= c));
     // The normal facing the camera is -z: colour (0.5, 0.5, 0).
     let normal = pass(Pass::Normal);
     assert!(
@@ -351,8 +347,10 @@ fn debug_passes_show_distance_normal_and_pigment() {
     assert!(Pass::Normal.is_data() && !Pass::Albedo.is_data());
     // Albedo: the pigment, unlit; the background where nothing is hit.
     let albedo = pass(Pass::Albedo);
-    assert_eq!(albedo.get(16, 16), DVec3::new(0.9, 0.2, 0.1));
-    assert_eq!(albedo.get(0, 0), DVec3::new(0.0, 0.0, 0.3));
+    // (Exactly the colours, as the film holds them: in single precision.)
+    let single = |c: DVec3| c.as_vec3().as_dvec3();
+    assert_eq!(albedo.get(16, 16), single(DVec3::new(0.9, 0.2, 0.1)));
+    assert_eq!(albedo.get(0, 0), single(DVec3::new(0.0, 0.0, 0.3)));
 }
 
 #[test]
@@ -445,8 +443,9 @@ fn antialiased_edge_pixels_match_povray_without_jitter() {
     for (f, want) in [(0.1, 0.0), (0.2, 0.3), (0.45, 0.3), (0.55, 0.7), (0.9, 1.0)] {
         let film = render_with(&edge_world(f), &opts, &aa, None).film;
         for y in [5, 12] {
+            // Within the film's single precision.
             assert!(
-                (film.get(16, y).x - want).abs() < 1e-12,
+                (film.get(16, y).x - want).abs() < 1e-7,
                 "f = {f}: {}",
                 film.get(16, y)
             );
@@ -464,7 +463,7 @@ fn antialiased_edge_pixels_match_povray_without_jitter() {
         ..Settings::default()
     };
     let film = render_with(&edge_world(0.3), &opts, &r4, None).film;
-    assert!((film.get(16, 5).x - 4.0 / 17.0).abs() < 1e-12);
+    assert!((film.get(16, 5).x - 4.0 / 17.0).abs() < 1e-7);
     // With jitter the count varies per row but stays within the column's cells.
     let jittered = render_with(
         &edge_world(0.45),
@@ -478,7 +477,7 @@ fn antialiased_edge_pixels_match_povray_without_jitter() {
     .film;
     for y in 0..24 {
         let v = jittered.get(16, y).x;
-        assert!((0.3 - 1e-12..=0.6 + 1e-12).contains(&v), "row {y}: {v}");
+        assert!((0.3 - 1e-7..=0.6 + 1e-7).contains(&v), "row {y}: {v}");
     }
 }
 

@@ -57,6 +57,7 @@ pub fn eval_options(args: &SceneArgs, width: u32, height: u32) -> Result<EvalOpt
         max_errors: args.max_errors.max(1),
         max_write: args.max_write,
         max_source_size: args.max_source_size,
+        max_image_pixels: args.max_image_pixels,
         ..EvalOptions::default()
     })
 }

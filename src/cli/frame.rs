@@ -88,6 +88,8 @@ impl<'a> Renderer<'a> {
         frame: u32,
     ) -> Result<Image, i32> {
         let mut out: Option<Image> = None;
+        // Motion blur: the sum of the instants' pictures.
+        let mut sum: Option<Vec<glam::DVec3>> = None;
         let n = instants.len().max(1);
         for (j, options) in instants.iter().enumerate() {
             let t0 = Instant::now();
@@ -170,8 +172,12 @@ impl<'a> Renderer<'a> {
                     })
                 }
                 Some(img) => {
-                    for (a, b) in img.film.pixels.iter_mut().zip(&rendered.film.pixels) {
-                        *a += *b;
+                    // The instants are summed in double precision.
+                    let sum = sum.get_or_insert_with(|| {
+                        img.film.pixels.iter().map(|p| p.as_dvec3()).collect()
+                    });
+                    for (a, b) in sum.iter_mut().zip(&rendered.film.pixels) {
+                        *a += b.as_dvec3();
                     }
                     img.stats = rendered.stats;
                     img.t_eval += t_eval;
@@ -181,9 +187,11 @@ impl<'a> Renderer<'a> {
             }
         }
         let mut img = out.ok_or(EXIT_ERRORS)?;
-        if n > 1 {
+        if let Some(sum) = sum {
             let k = 1.0 / n as f64;
-            img.film.pixels.iter_mut().for_each(|p| *p *= k);
+            for (p, s) in img.film.pixels.iter_mut().zip(sum) {
+                *p = (s * k).as_vec3();
+            }
         }
         Ok(img)
     }

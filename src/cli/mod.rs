@@ -112,6 +112,10 @@ pub struct SceneArgs {
     /// in all.
     #[arg(long, value_name = "SIZE", default_value = "256M", value_parser = size::parse_size)]
     pub max_write: u64,
+    /// Most pixels the image files a scene reads may hold together (each file
+    /// once); checked before decoding.
+    #[arg(long, value_name = "N", default_value_t = rts::eval::DEFAULT_MAX_IMAGE_PIXELS)]
+    pub max_image_pixels: u64,
     /// Evaluate (and render) the scene as a still at this `clock` value.
     #[arg(long, value_name = "T", allow_negative_numbers = true)]
     pub clock: Option<f64>,

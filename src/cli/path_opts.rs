@@ -534,13 +534,7 @@ fn progressive(
 /// Denoises `film` with Intel Open Image Denoise (feature `oidn`).
 #[cfg(feature = "oidn")]
 fn denoise_film(film: &Film, albedo: &Film, normal: &Film) -> Result<Film, String> {
-    let flat = |f: &Film| -> Vec<f32> {
-        f.pixels
-            .iter()
-            .flat_map(|p| p.to_array())
-            .map(|v| v as f32)
-            .collect()
-    };
+    let flat = |f: &Film| -> Vec<f32> { f.pixels.iter().flat_map(|p| p.to_array()).collect() };
     let (colour, alb, nrm) = (flat(film), flat(albedo), flat(normal));
     let mut outv = vec![0f32; colour.len()];
     let device =
@@ -563,7 +557,7 @@ fn denoise_film(film: &Film, albedo: &Film, normal: &Film) -> Result<Film, Strin
         height: film.height,
         pixels: outv
             .chunks_exact(3)
-            .map(|c| glam::DVec3::new(f64::from(c[0]), f64::from(c[1]), f64::from(c[2])))
+            .map(|c| glam::Vec3::new(c[0], c[1], c[2]))
             .collect(),
     })
 }

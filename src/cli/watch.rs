@@ -249,7 +249,7 @@ fn upscale(small: &Film, width: u32, height: u32) -> Film {
         let sy = (u64::from(y) * u64::from(small.height) / u64::from(height)) as u32;
         for x in 0..width {
             let sx = (u64::from(x) * u64::from(small.width) / u64::from(width)) as u32;
-            pixels.push(small.get(sx, sy));
+            pixels.push(small.pixels[sy as usize * small.width as usize + sx as usize]);
         }
     }
     Film {

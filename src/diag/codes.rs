@@ -103,6 +103,8 @@ pub const ERROR_LIMIT: &str = "rts::limit::errors";
 pub const TIME_LIMIT: &str = "rts::limit::time";
 /// An image larger than allowed.
 pub const IMAGE_SIZE: &str = "rts::limit::image_size";
+/// Images a scene reads that hold more pixels than `--max-image-pixels` allows.
+pub const IMAGE_PIXELS: &str = "rts::limit::image_pixels";
 /// A construct rts knows from POV-Ray but does not implement yet.
 pub const UNSUPPORTED: &str = "rts::eval::unsupported";
 /// A transform that cannot be inverted (`scale 0`, a singular matrix).

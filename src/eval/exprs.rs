@@ -758,13 +758,7 @@ impl Evaluator<'_> {
 }
 
 /// sRGB-encoded component to linear.
-pub(crate) fn srgb_to_linear(c: f64) -> f64 {
-    if c <= 0.04045 {
-        c / 12.92
-    } else {
-        ((c + 0.055) / 1.055).powf(2.4)
-    }
-}
+pub(crate) use crate::scene::srgb_to_linear;
 
 /// POV-Ray 3.7 keywords (patterns, objects, camera types, modifiers) that rts does not
 /// implement yet and does not reserve: met where a name is expected, they are

@@ -201,20 +201,21 @@ impl Evaluator<'_> {
         }
         let (name, fspan) = self.file_name(c, "the PNG file's name")?;
         let path = self.data_file(&name, fspan, "height map")?;
-        let img = image::ImageReader::open(&path)
-            .map_err(|e| e.to_string())
-            .and_then(|r| r.with_guessed_format().map_err(|e| e.to_string()))
-            .and_then(|r| r.decode().map_err(|e| e.to_string()))
-            .map_err(|e| {
-                super::Fail::from(
-                    Diagnostic::error(
-                        codes::FILE_NOT_FOUND,
-                        fspan,
-                        format!("cannot read `{name}` as PNG: {e}"),
-                    )
-                    .with_help("give a PNG image"),
+        let picture = self.picture(&path, &name, fspan).map_err(|e| match e {
+            super::images::ImageFail::Fail(f) => f,
+            super::images::ImageFail::Read(e) => super::Fail::from(
+                Diagnostic::error(
+                    codes::FILE_NOT_FOUND,
+                    fspan,
+                    format!("cannot read `{name}` as PNG: {e}"),
                 )
-            })?;
+                .with_help("give a PNG image"),
+            ),
+        })?;
+        // The grey levels as the image decoder converts colours (a temporary
+        // 16-bit copy; the mesh made from it is larger still).
+        let img = super::images::to_dynamic(&picture);
+        drop(picture);
         let grey = img.to_luma16();
         let (w, h) = (grey.width() as usize, grey.height() as usize);
         if w < 2 || h < 2 {

@@ -1,6 +1,7 @@
 //! `texture`, `pigment`, `finish` and `reflection` blocks.
 
 use super::cursor::{Cursor, Tok};
+use super::images::ImageFail;
 use super::objects::TRANSFORMS;
 use super::patterns::map_entry_value;
 use super::patterns::PatternSpec;
@@ -9,9 +10,9 @@ use super::value::Value;
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
 use crate::scene::{
-    compose, Colour, Finish, ImageMap, Interior, Mapped, Normal, NormalBlend, Pattern, PatternKind,
-    PatternMap, PatternedTexture, Pigment, Reflection, Texture, TextureEntries, TextureMapEntries,
-    Transform,
+    compose, Colour, Finish, ImageMap, IndexClear, Interior, Mapped, Normal, NormalBlend, Pattern,
+    PatternKind, PatternMap, PatternedTexture, Pigment, Reflection, Texture, TextureEntries,
+    TextureMapEntries, Transfer, Transform,
 };
 use crate::span::Span;
 use glam::DVec3;
@@ -1136,17 +1137,7 @@ impl Evaluator<'_> {
     /// `image_map { png "file" map_type N interpolate N once filter/transmit … }`.
     pub(crate) fn image_map(&mut self, c: &mut Cursor) -> R<Pigment> {
         let mut file: Option<(String, crate::span::Span)> = None;
-        let mut im = ImageMap {
-            width: 1,
-            height: 1,
-            pixels: vec![Colour::BLACK],
-            map_type: 0,
-            interpolate: false,
-            once: false,
-            uv_mapping: false,
-            see_through: false,
-            mods: None,
-        };
+        let (mut map_type, mut interpolate, mut once, mut uv_mapping) = (0u8, false, false, false);
         let mut filter_all: Option<f64> = None;
         let mut transmit_all: Option<f64> = None;
         // `filter INDEX, AMOUNT` / `transmit INDEX, AMOUNT`: (is filter, palette
@@ -1183,16 +1174,16 @@ impl Evaluator<'_> {
                 }
                 Tok::Kw("map_type", _) => self
                     .take_float(c, "the map type (0, 1 or 2)")
-                    .map(|x| im.map_type = x as u8),
+                    .map(|x| map_type = x as u8),
                 Tok::Kw("interpolate", _) => self
                     .take_float(c, "the interpolation (2 bilinear)")
-                    .map(|x| im.interpolate = x >= 2.0),
+                    .map(|x| interpolate = x >= 2.0),
                 Tok::Kw("once", _) => {
-                    im.once = true;
+                    once = true;
                     Ok(())
                 }
                 Tok::Kw("uv_mapping", _) => {
-                    im.uv_mapping = true;
+                    uv_mapping = true;
                     Ok(())
                 }
                 Tok::Kw(kw @ ("filter" | "transmit"), _) => {
@@ -1242,75 +1233,63 @@ impl Evaluator<'_> {
             .into());
         };
         let path = self.data_file(&name, span, "image")?;
-        let img = image::open(&path).map_err(|e| {
-            Fail::from(
+        let picture = self.picture(&path, &name, span).map_err(|e| match e {
+            ImageFail::Fail(f) => f,
+            ImageFail::Read(e) => Fail::from(
                 Diagnostic::error(
                     codes::FILE_NOT_FOUND,
                     span,
                     format!("cannot read image `{name}`: {e}"),
                 )
                 .with_help("image_map reads PNG, JPEG and OpenEXR files"),
-            )
+            ),
         })?;
         // How stored values become linear ones, as POV-Ray 3.7 does (measured): a
         // `gamma G` after the file name decodes by that power; else scenes of
         // `#version 3.7` read 8- and 16-bit PNG and JPEG pictures as sRGB, and
         // older scenes (or floating-point pictures) use the values as stored.
-        let float_image = matches!(
-            img.color(),
-            image::ColorType::Rgb32F | image::ColorType::Rgba32F
-        );
-        let srgb =
-            file_gamma.is_none() && !float_image && self.language_version.is_some_and(|v| v >= 3.7);
-        let rgba = img.to_rgba32f();
-        im.width = rgba.width().max(1);
-        im.height = rgba.height().max(1);
-        im.pixels = rgba
-            .pixels()
-            .map(|p| {
-                let lin = |v: f32| {
-                    let v = f64::from(v);
-                    match file_gamma {
-                        Some(g) => v.max(0.0).powf(g),
-                        None if srgb => super::exprs::srgb_to_linear(v),
-                        None => v,
-                    }
-                };
-                Colour {
-                    rgb: glam::DVec3::new(lin(p[0]), lin(p[1]), lin(p[2])),
-                    filter: filter_all.unwrap_or(0.0),
-                    transmit: transmit_all.unwrap_or(1.0 - f64::from(p[3])),
-                }
-            })
-            .collect();
+        let srgb = file_gamma.is_none()
+            && !picture.is_float()
+            && self.language_version.is_some_and(|v| v >= 3.7);
+        let transfer = match file_gamma {
+            Some(g) => Transfer::Power(g),
+            None if srgb => Transfer::Srgb,
+            None => Transfer::AsStored,
+        };
+        let tones = self.images.tones(picture.depth(), transfer);
+        let mut im = ImageMap {
+            map_type,
+            interpolate,
+            once,
+            uv_mapping,
+            ..ImageMap::new(picture, tones)
+        };
+        im.filter_all = filter_all;
+        im.transmit_all = transmit_all;
         if !by_index.is_empty() {
-            match super::pattern_blocks::palette_indices(&path)
-                .filter(|i| i.len() == im.pixels.len())
-            {
-                Some(indices) => {
-                    for (px, &k) in im.pixels.iter_mut().zip(&indices) {
-                        for &(is_filter, at, amount, _) in &by_index {
-                            if at == k {
-                                if is_filter {
-                                    px.filter = amount;
-                                } else {
-                                    px.transmit = amount;
-                                }
-                            }
-                        }
+            if im.picture.palette().is_some() {
+                let mut table = [IndexClear::default(); 256];
+                for &(is_filter, at, amount, _) in &by_index {
+                    let entry = &mut table[usize::from(at)];
+                    if is_filter {
+                        entry.filter = Some(amount);
+                    } else {
+                        entry.transmit = Some(amount);
                     }
                 }
-                None => self.warn(
+                im.by_index = Some(Arc::new(table));
+            } else {
+                self.warn(
                     Diagnostic::warning(
                         codes::IGNORED,
                         by_index[0].3,
                         format!("`{name}` has no palette: filter and transmit by palette index do nothing"),
                     )
                     .with_help("use `filter all AMOUNT` / `transmit all AMOUNT`, or an alpha channel"),
-                ),
+                );
             }
         }
-        im.see_through = im.once || im.pixels.iter().any(|c| c.filter + c.transmit > 0.0);
+        im.see_through = im.find_see_through();
         Ok(Pigment {
             pattern: Pattern::Image(Arc::new(im)),
             transform: None,

@@ -18,6 +18,7 @@ mod exprs;
 mod file_data;
 pub mod file_io;
 pub mod function;
+mod images;
 mod import;
 mod include;
 mod items;
@@ -67,6 +68,10 @@ use crate::syntax::ast;
 use std::path::PathBuf;
 use std::sync::Arc;
 
+/// The default of [`EvalOptions::max_image_pixels`]: 16384 × 16384, a 1 GiB
+/// 8-bit RGBA picture.
+pub const DEFAULT_MAX_IMAGE_PIXELS: u64 = 1 << 28;
+
 /// Settings that come from the command line rather than the scene.
 #[derive(Clone, Debug)]
 pub struct EvalOptions {
@@ -109,6 +114,9 @@ pub struct EvalOptions {
     /// Deepest nesting of CSG objects (`union`s of `union`s are flattened and
     /// do not count).
     pub max_object_depth: u32,
+    /// Most pixels the images a scene reads may hold together (each file
+    /// counted once): checked from each file's header before it is decoded.
+    pub max_image_pixels: u64,
     /// Whether `#write` reaches the disk (rendering) or only later reads of the
     /// same evaluation (`rts check`, the editor).
     pub write_files: bool,
@@ -151,6 +159,7 @@ impl Default for EvalOptions {
             max_include_depth: 64,
             max_array_size: 1 << 22,
             max_object_depth: 10_000,
+            max_image_pixels: DEFAULT_MAX_IMAGE_PIXELS,
             write_files: false,
             max_memory: crate::memory::default_eval_budget(),
             max_macro_calls: 10_000_000,
@@ -191,11 +200,13 @@ pub struct Declared {
 /// What one evaluation leaves for the next evaluation of the same scene (the
 /// frames of an animation): parsed include files, meshes read from files, and
 /// meshes by content, so geometry that does not change keeps the same `Arc` (and
-/// with it its BVH, see [`crate::build::BuildCache`]) from frame to frame.
+/// with it its BVH, see [`crate::build::BuildCache`]) from frame to frame; and
+/// decoded images, read again only when their file changes.
 #[derive(Default)]
 pub struct EvalCache {
     parsed_includes: rustc_hash::FxHashMap<FileId, Option<std::rc::Rc<ast::File>>>,
     pub(crate) meshes: mesh_cache::MeshCache,
+    images: images::ImageCache,
     data_files: std::collections::BTreeSet<PathBuf>,
 }
 
@@ -203,6 +214,12 @@ impl EvalCache {
     /// Every data file (mesh, height field, image) the evaluations found, sorted.
     pub fn data_files(&self) -> impl Iterator<Item = &std::path::Path> {
         self.data_files.iter().map(PathBuf::as_path)
+    }
+
+    /// How many image files the evaluations decoded: each file once while its
+    /// size and modification time stay the same, however often it is used.
+    pub fn images_decoded(&self) -> u64 {
+        self.images.decoded()
     }
 }
 
@@ -227,6 +244,7 @@ pub fn eval_cached(
 ) -> Evaluated {
     let scene_dir = sources.get(file_id).dir().map(PathBuf::from);
     cache.meshes.begin();
+    cache.images.begin();
     let mut ev = Evaluator {
         sources,
         options,
@@ -245,6 +263,8 @@ pub fn eval_cached(
         language_version: None,
         parsed_includes: std::mem::take(&mut cache.parsed_includes),
         mesh_cache: std::mem::take(&mut cache.meshes),
+        images: std::mem::take(&mut cache.images),
+        image_pixels: 0,
         data_files: Default::default(),
         fonts: Default::default(),
         coefficient_lists: false,
@@ -271,6 +291,8 @@ pub fn eval_cached(
     cache.parsed_includes = std::mem::take(&mut ev.parsed_includes);
     cache.meshes = std::mem::take(&mut ev.mesh_cache);
     cache.meshes.end();
+    cache.images = std::mem::take(&mut ev.images);
+    cache.images.end();
     cache.data_files.extend(ev.data_files.take());
     ev.finish_scene()
 }
@@ -321,6 +343,11 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) parsed_includes: rustc_hash::FxHashMap<FileId, Option<std::rc::Rc<ast::File>>>,
     /// Meshes kept from earlier evaluations of the same scene.
     pub(crate) mesh_cache: mesh_cache::MeshCache,
+    /// Decoded images, kept from earlier evaluations of the same scene.
+    pub(crate) images: images::ImageCache,
+    /// Pixels of the images this evaluation reads (each file counted once),
+    /// against [`EvalOptions::max_image_pixels`].
+    pub(crate) image_pixels: u64,
     /// Fonts read by `text` objects, by file.
     pub(crate) fonts: text::FontCache,
     /// Data files found (for the animation manifest's scene hash).

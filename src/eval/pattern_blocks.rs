@@ -3,13 +3,14 @@
 //! `bump_map` and `material_map`.
 
 use super::cursor::{Cursor, Tok};
+use super::images::ImageFail;
 use super::patterns::map_entry_value;
 use super::value::Value;
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
 use crate::scene::{
-    Colour, ImageMap, ImagePattern, ImageUse, InsideTest, Normal, NormalBlend, PatternKind,
-    PatternMods, PatternedTexture, SlopeSpec, Texture, TextureEntries,
+    ImageMap, ImagePattern, ImageUse, InsideTest, Normal, NormalBlend, PatternKind, PatternMods,
+    PatternedTexture, SlopeSpec, Texture, TextureEntries, Transfer,
 };
 use crate::span::Span;
 use glam::{DVec2, DVec3};
@@ -325,45 +326,32 @@ impl Evaluator<'_> {
             .into());
         };
         let path = self.data_file(&name, span, "image")?;
-        let img = image::open(&path).map_err(|e| {
-            Fail::from(
+        let picture = self.picture(&path, &name, span).map_err(|e| match e {
+            ImageFail::Fail(f) => f,
+            ImageFail::Read(e) => Fail::from(
                 Diagnostic::error(
                     codes::FILE_NOT_FOUND,
                     span,
                     format!("cannot read image `{name}`: {e}"),
                 )
                 .with_help(format!("{block} reads PNG, JPEG and OpenEXR files")),
-            )
+            ),
         })?;
-        let rgba = img.to_rgba32f();
-        let (width, height) = (rgba.width().max(1), rgba.height().max(1));
-        let pixels: Vec<Colour> = rgba
-            .pixels()
-            .map(|p| Colour {
-                rgb: DVec3::new(f64::from(p[0]), f64::from(p[1]), f64::from(p[2])),
-                filter: 0.0,
-                transmit: 1.0 - f64::from(p[3]),
-            })
-            .collect();
-        let indices = palette_indices(&path).filter(|i| i.len() == pixels.len());
-        let source = spec.source.unwrap_or(if indices.is_some() {
+        let source = spec.source.unwrap_or(if picture.palette().is_some() {
             palette_default
         } else {
             ImageUse::Colour
         });
+        // Patterns read the values as stored.
+        let tones = self.images.tones(picture.depth(), Transfer::AsStored);
         Ok(ImagePattern {
             image: Arc::new(ImageMap {
-                width,
-                height,
-                pixels,
                 map_type: spec.map_type,
                 interpolate: spec.interpolate,
                 once: spec.once,
-                uv_mapping: false,
                 see_through: false,
-                mods: None,
+                ..ImageMap::new(picture, tones)
             }),
-            indices,
             source,
         })
     }
@@ -483,33 +471,6 @@ impl Evaluator<'_> {
         }
         Ok(entries)
     }
-}
-
-/// The palette index of each pixel of `path`, if it is a PNG with a palette
-/// (row 0 at the top).
-pub(crate) fn palette_indices(path: &std::path::Path) -> Option<Vec<u8>> {
-    let file = std::fs::File::open(path).ok()?;
-    let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
-    decoder.set_transformations(png::Transformations::IDENTITY);
-    let mut reader = decoder.read_info().ok()?;
-    if reader.info().color_type != png::ColorType::Indexed {
-        return None;
-    }
-    let mut buf = vec![0; reader.output_buffer_size()?];
-    let out = reader.next_frame(&mut buf).ok()?;
-    let bits = out.bit_depth as usize;
-    let (w, h) = (out.width as usize, out.height as usize);
-    let mut idx = Vec::with_capacity(w * h);
-    for row in buf.chunks(out.line_size).take(h) {
-        for x in 0..w {
-            let bit = x * bits;
-            let byte = *row.get(bit / 8)?;
-            let shift = 8 - bits - bit % 8;
-            let mask = ((1u16 << bits) - 1) as u8;
-            idx.push((byte >> shift) & mask);
-        }
-    }
-    Some(idx)
 }
 
 impl Evaluator<'_> {

@@ -1,5 +1,6 @@
 //! Writing a [`Film`] to an image file.
 
+mod encode;
 mod format;
 mod gamma;
 
@@ -8,12 +9,8 @@ pub use gamma::{decode_working, to_file, Gamma, ParseGammaError};
 
 use crate::files;
 use crate::render::Film;
-use image::codecs::hdr::HdrEncoder;
-use image::codecs::openexr::OpenExrEncoder;
-use image::codecs::png::PngEncoder;
-use image::{ExtendedColorType, ImageEncoder};
 use std::fmt;
-use std::io::{BufWriter, Write};
+use std::io::BufWriter;
 use std::path::{Path, PathBuf};
 
 /// Bits per channel in the written file.
@@ -64,38 +61,6 @@ impl std::error::Error for OutputError {
     }
 }
 
-/// The file samples of `film`, RGB interleaved, rows from the top, in [0, 1].
-pub fn encode_samples(film: &Film, opts: &OutputOptions) -> Vec<f64> {
-    use rayon::prelude::*;
-    // Three `pow`s per pixel: in parallel, the same values in the same order.
-    let per_pixel: Vec<[f64; 3]> = film
-        .pixels
-        .par_iter()
-        .map(|c| {
-            c.to_array()
-                .map(|v| to_file(v, opts.assumed_gamma, opts.gamma))
-        })
-        .collect();
-    per_pixel.into_iter().flatten().collect()
-}
-
-/// Linear light of `film` (working values decoded with `assumed_gamma`, negatives
-/// 0, no upper clamp), RGB interleaved, rows from the top: what EXR and HDR hold.
-pub fn linear_samples(film: &Film, opts: &OutputOptions) -> Vec<f32> {
-    film.pixels
-        .iter()
-        .flat_map(|c| c.to_array())
-        .map(|v| {
-            let l = decode_working(v, opts.assumed_gamma);
-            if l.is_finite() {
-                l as f32
-            } else {
-                0.0
-            }
-        })
-        .collect()
-}
-
 /// Writes `film` at `path` in the format its extension names (PNG when the
 /// extension is not one of [`Format`]'s), atomically: the image goes to a
 /// temporary file in the same directory which is then renamed over `path`. A FIFO
@@ -127,81 +92,9 @@ pub fn write_as(
     let result = (|| -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
         let file = files::create(path, files::Policy::Stream)?;
         let mut out = BufWriter::new(file);
-        match format {
-            Format::Png | Format::Ppm => {
-                let (bytes, colour) = integer_samples(film, opts);
-                if format == Format::Png {
-                    PngEncoder::new(&mut out).write_image(
-                        &bytes,
-                        film.width,
-                        film.height,
-                        colour,
-                    )?;
-                } else {
-                    write_ppm(&mut out, film, opts)?;
-                }
-            }
-            Format::Exr => {
-                let floats = linear_samples(film, opts);
-                let bytes: Vec<u8> = floats.iter().flat_map(|v| v.to_ne_bytes()).collect();
-                OpenExrEncoder::new(&mut out).write_image(
-                    &bytes,
-                    film.width,
-                    film.height,
-                    ExtendedColorType::Rgb32F,
-                )?;
-            }
-            Format::Hdr => {
-                let floats = linear_samples(film, opts);
-                let px: Vec<image::Rgb<f32>> = floats
-                    .chunks_exact(3)
-                    .map(|c| image::Rgb([c[0], c[1], c[2]]))
-                    .collect();
-                HdrEncoder::new(&mut out).encode(&px, film.width as usize, film.height as usize)?;
-            }
-        }
+        encode::encode(&mut out, film, format, opts)?;
         out.into_inner().map_err(|e| e.into_error())?.commit()?;
         Ok(())
     })();
     result.map_err(err)
-}
-
-/// A binary PPM (P6): maximum value 255 or 65535, 16-bit samples big-endian as
-/// the format requires.
-fn write_ppm(out: &mut impl Write, film: &Film, opts: &OutputOptions) -> std::io::Result<()> {
-    let samples = encode_samples(film, opts);
-    let max = match opts.bit_depth {
-        BitDepth::Eight => 255,
-        BitDepth::Sixteen => 65535,
-    };
-    write!(out, "P6\n{} {}\n{max}\n", film.width, film.height)?;
-    let bytes: Vec<u8> = match opts.bit_depth {
-        BitDepth::Eight => samples.iter().map(|v| (v * 255.0).round() as u8).collect(),
-        BitDepth::Sixteen => samples
-            .iter()
-            .flat_map(|v| ((v * 65535.0).round() as u16).to_be_bytes())
-            .collect(),
-    };
-    out.write_all(&bytes)
-}
-
-/// The 8- or 16-bit file samples (native-endian bytes for 16) and their layout.
-fn integer_samples(film: &Film, opts: &OutputOptions) -> (Vec<u8>, ExtendedColorType) {
-    let samples = encode_samples(film, opts);
-    match opts.bit_depth {
-        BitDepth::Eight => (
-            samples
-                .iter()
-                .map(|v| (v * 255.0).round() as u8)
-                .collect::<Vec<u8>>(),
-            ExtendedColorType::Rgb8,
-        ),
-        BitDepth::Sixteen => (
-            samples
-                .iter()
-                .flat_map(|v| ((v * 65535.0).round() as u16).to_ne_bytes())
-                .collect(),
-            ExtendedColorType::Rgb16,
-        ),
-    }
 }

@@ -36,7 +36,7 @@ pub use shade::{metallic_tint, metallic_weight, reflection_amount, trace, TraceC
 pub use stats::RayStats;
 
 use crate::build::{Ray, RayKind, World};
-use glam::DVec3;
+use glam::{DVec3, Vec3};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU64, Ordering};
 
@@ -247,7 +247,7 @@ pub fn render_with(
             p.done.fetch_add(1, Ordering::Relaxed);
         }
     };
-    let mut pixels = vec![DVec3::ZERO; cw as usize * ch as usize];
+    let mut film = Film::new(cw, ch);
     let mut stats = RenderStats::default();
     stats.rays += pretrace_rays;
     if let Some(s) = &shot {
@@ -255,14 +255,7 @@ pub fn render_with(
         stats.photons_stored = s.map.len() as u64;
     }
     if cw == 0 || ch == 0 {
-        return Rendered {
-            film: Film {
-                width: cw,
-                height: ch,
-                pixels,
-            },
-            stats,
-        };
+        return Rendered { film, stats };
     }
     let row_stats: Vec<RenderStats> = match sampling {
         Sampling::Centre | Sampling::Fixed(_) => {
@@ -270,7 +263,7 @@ pub fn render_with(
                 Sampling::Fixed(n) => n.max(1),
                 _ => 0,
             };
-            pixels
+            film.pixels
                 .par_chunks_mut(cw as usize)
                 .enumerate()
                 .map(|(j, row)| {
@@ -278,11 +271,12 @@ pub fn render_with(
                     let mut st = RenderStats::default();
                     for (i, px) in row.iter_mut().enumerate() {
                         let x = crop.x0 + i as u32;
-                        *px = if n == 0 {
+                        let c = if n == 0 {
                             r.centre(x, y, &mut st)
                         } else {
                             r.fixed(x, y, n, &mut st)
                         };
+                        *px = c.as_vec3();
                         st.pixels += 1;
                     }
                     tick();
@@ -291,47 +285,57 @@ pub fn render_with(
                 .collect()
         }
         Sampling::Adaptive(aa) => {
+            // Each row of blocks fills its band of the film (its blocks in
+            // parallel, and the bands in parallel), so only the blocks in
+            // progress hold their values, not the whole picture a second time.
             let blocks = aa::blocks(&crop, w, h);
-            let results: Vec<(aa::Block, Vec<DVec3>, RenderStats)> = blocks
-                .into_par_iter()
-                .map(|b| {
-                    let mut st = RenderStats::default();
-                    let values = aa::render_block(
-                        &b,
-                        &aa,
-                        |x, y, st: &mut RenderStats| r.centre(x, y, st),
-                        |x, y, c, st: &mut RenderStats| r.supersample(x, y, c, &aa, st),
-                        &mut st,
-                    );
-                    tick();
-                    (b, values, st)
-                })
-                .collect();
-            let mut all = Vec::with_capacity(results.len());
-            for (b, values, mut st) in results {
-                for y in b.y0.max(crop.y0)..b.y1.min(crop.y1) {
-                    for x in b.x0.max(crop.x0)..b.x1.min(crop.x1) {
-                        st.pixels += 1;
-                        let v = values[((y - b.y0) * (b.x1 - b.x0) + (x - b.x0)) as usize];
-                        pixels[((y - crop.y0) * cw + (x - crop.x0)) as usize] = v;
-                    }
-                }
-                all.push(st);
+            let mut bands: Vec<(u32, &mut [Vec3], &[aa::Block])> = Vec::new();
+            let mut rest: &mut [Vec3] = &mut film.pixels;
+            for group in blocks.chunk_by(|a, b| a.y0 == b.y0) {
+                let (y0, y1) = (group[0].y0.max(crop.y0), group[0].y1.min(crop.y1));
+                let (band, tail) =
+                    std::mem::take(&mut rest).split_at_mut((y1 - y0) as usize * cw as usize);
+                bands.push((y0, band, group));
+                rest = tail;
             }
-            all
+            bands
+                .into_par_iter()
+                .flat_map_iter(|(band_y0, band, group)| {
+                    let results: Vec<(aa::Block, Vec<DVec3>, RenderStats)> = group
+                        .par_iter()
+                        .map(|b| {
+                            let mut st = RenderStats::default();
+                            let values = aa::render_block(
+                                b,
+                                &aa,
+                                |x, y, st: &mut RenderStats| r.centre(x, y, st),
+                                |x, y, c, st: &mut RenderStats| r.supersample(x, y, c, &aa, st),
+                                &mut st,
+                            );
+                            tick();
+                            (*b, values, st)
+                        })
+                        .collect();
+                    let mut all = Vec::with_capacity(results.len());
+                    for (b, values, mut st) in results {
+                        for y in b.y0.max(crop.y0)..b.y1.min(crop.y1) {
+                            for x in b.x0.max(crop.x0)..b.x1.min(crop.x1) {
+                                st.pixels += 1;
+                                let v = values[((y - b.y0) * (b.x1 - b.x0) + (x - b.x0)) as usize];
+                                band[((y - band_y0) * cw + (x - crop.x0)) as usize] = v.as_vec3();
+                            }
+                        }
+                        all.push(st);
+                    }
+                    all
+                })
+                .collect()
         }
     };
     for s in row_stats {
         stats += s;
     }
-    Rendered {
-        film: Film {
-            width: cw,
-            height: ch,
-            pixels,
-        },
-        stats,
-    }
+    Rendered { film, stats }
 }
 
 /// What every sample of one render shares.

@@ -334,10 +334,10 @@ pub enum PatternKind {
 /// How an `image_pattern`, `bump_map` or `material_map` reads its image.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ImagePattern {
-    /// The image, with its projection (`map_type`, `once`, `interpolate`).
+    /// The image, with its projection (`map_type`, `once`, `interpolate`),
+    /// read as stored (the palette index of each pixel comes from its picture,
+    /// for palette images).
     pub image: Arc<ImageMap>,
-    /// The palette index of each pixel (row 0 at the top), for palette images.
-    pub indices: Option<Vec<u8>>,
     /// What the value is made of.
     pub source: ImageUse,
 }
@@ -464,12 +464,19 @@ pub enum PatternMap {
 /// `image_map { png "file" map_type interpolate once filter/transmit }`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ImageMap {
-    /// Width in pixels.
-    pub width: u32,
-    /// Height in pixels.
-    pub height: u32,
-    /// Linear-light pixels, row 0 at the top.
-    pub pixels: Vec<Colour>,
+    /// The decoded file, shared by every map that reads it.
+    pub picture: Arc<super::Picture>,
+    /// How its stored values become colours (`gamma`, sRGB or as stored),
+    /// for the picture's depth.
+    pub tones: Arc<super::Tones>,
+    /// `filter all F`: every pixel's filter (`None`: 0).
+    pub filter_all: Option<f64>,
+    /// `transmit all T`: every pixel's transmit (`None`: 1 − the pixel's
+    /// opacity).
+    pub transmit_all: Option<f64>,
+    /// `filter INDEX, F` / `transmit INDEX, T` of a palette image: the filter
+    /// and transmit of the pixels of each palette entry, where given.
+    pub by_index: Option<Arc<[IndexClear; 256]>>,
     /// `map_type`: 0 planar, 1 spherical, 2 cylindrical.
     pub map_type: u8,
     /// `interpolate 2` (bilinear) when true; nearest pixel otherwise.
@@ -479,11 +486,100 @@ pub struct ImageMap {
     /// `uv_mapping`: look up by the surface's uv instead of the point.
     pub uv_mapping: bool,
     /// Whether light may pass: a pixel has filter or transmit, or the map is
-    /// `once` (clear outside the unit square). Set once the pixels are known.
+    /// `once` (clear outside the unit square). See [`ImageMap::find_see_through`].
     pub see_through: bool,
     /// `turbulence` and `warp { }` of the pigment, applied to the point before
     /// the lookup (`None`: none).
     pub mods: Option<PatternMods>,
+}
+
+/// The filter and transmit `filter INDEX, F` / `transmit INDEX, T` give the
+/// pixels of one palette entry (`None`: as the rest of the image).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct IndexClear {
+    /// Filter.
+    pub filter: Option<f64>,
+    /// Transmit.
+    pub transmit: Option<f64>,
+}
+
+impl ImageMap {
+    /// A map of `picture` seen through `tones`, tiled, nearest pixel, planar,
+    /// opaque where the picture is.
+    pub fn new(picture: Arc<super::Picture>, tones: Arc<super::Tones>) -> ImageMap {
+        let mut im = ImageMap {
+            picture,
+            tones,
+            filter_all: None,
+            transmit_all: None,
+            by_index: None,
+            map_type: 0,
+            interpolate: false,
+            once: false,
+            uv_mapping: false,
+            see_through: false,
+            mods: None,
+        };
+        im.see_through = im.find_see_through();
+        im
+    }
+
+    /// Width in pixels.
+    pub fn width(&self) -> u32 {
+        self.picture.width()
+    }
+
+    /// Height in pixels.
+    pub fn height(&self) -> u32 {
+        self.picture.height()
+    }
+
+    /// The colour of pixel `i` (row-major from the top-left): the stored value
+    /// through the tones, filter and transmit as the map says.
+    #[inline]
+    pub fn pixel(&self, i: usize) -> Colour {
+        let (rgb, alpha) = self.tones.colour(self.picture.texel(i));
+        let mut filter = self.filter_all.unwrap_or(0.0);
+        let mut transmit = self.transmit_all.unwrap_or_else(|| 1.0 - f64::from(alpha));
+        if let (Some(table), Some(k)) = (&self.by_index, self.picture.index(i)) {
+            let c = table[usize::from(k)];
+            filter = c.filter.unwrap_or(filter);
+            transmit = c.transmit.unwrap_or(transmit);
+        }
+        Colour {
+            rgb: DVec3::from_array(rgb),
+            filter,
+            transmit,
+        }
+    }
+
+    /// Whether any pixel lets light through (filter + transmit above 0) or the
+    /// map is `once`: what [`ImageMap::see_through`] should be. Found from the
+    /// picture's lowest opacity and the palette entries it uses, without
+    /// reading every pixel.
+    pub fn find_see_through(&self) -> bool {
+        let clear = |c: IndexClear, alpha: f32| {
+            let f = c.filter.or(self.filter_all).unwrap_or(0.0);
+            let t = c
+                .transmit
+                .or(self.transmit_all)
+                .unwrap_or(1.0 - f64::from(alpha));
+            f + t > 0.0
+        };
+        if self.once {
+            return true;
+        }
+        match (self.picture.palette(), &self.by_index) {
+            (Some(palette), Some(table)) => (0..=255u8).any(|k| {
+                self.picture.uses_index(k)
+                    && clear(
+                        table[usize::from(k)],
+                        (f32::from(palette[usize::from(k)][3]) / 255.0).clamp(0.0, 1.0),
+                    )
+            }),
+            _ => clear(IndexClear::default(), self.picture.min_alpha()),
+        }
+    }
 }
 
 /// `normal { PATTERN [bump_size] modifiers transforms }`.

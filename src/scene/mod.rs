@@ -16,6 +16,7 @@ mod media;
 mod object;
 mod path;
 mod photons;
+mod picture;
 mod radiosity;
 mod transform;
 mod warp;
@@ -31,11 +32,12 @@ pub use material::{
     PatternKind, PatternMap, PatternMods, PatternedTexture, Pigment, Reflection, Texture,
     TextureEntries, TextureMapEntries, Wave,
 };
-pub use material::{ImagePattern, ImageUse, NormalBlend, SlopeSpec};
+pub use material::{ImagePattern, ImageUse, IndexClear, NormalBlend, SlopeSpec};
 pub use media::{Media, Scattering, ScatteringKind};
 pub use object::{CsgOp, Members, MeshData, Object, ObjectFlags, Shape, TextData};
 pub use path::{PathTracing, PixelFilter};
 pub use photons::{LightPhotons, ObjectPhotons, PhotonDensity, Photons, PhotonsBlock};
+pub use picture::{srgb_to_linear, Depth, Palette, Picture, Samples, Texel, Tones, Transfer};
 pub use radiosity::{Radiosity, RadiosityBlock};
 pub use transform::Transform;
 pub use warp::{Fractal, FractalKind, MappingWarp, Warp, WarpStep};

@@ -94,33 +94,30 @@ impl Accum {
         self.crop.x1 - self.crop.x0
     }
 
-    fn mean(&self, v: &[DVec3]) -> Film {
+    /// The means of sums `v`, through `f`.
+    fn mean(&self, v: &[DVec3], f: impl Fn(DVec3) -> DVec3) -> Film {
         let k = 1.0 / f64::from(self.samples.max(1));
-        Film {
-            width: self.width(),
-            height: self.crop.y1 - self.crop.y0,
-            pixels: v.iter().map(|s| *s * k).collect(),
-        }
+        Film::from_colours(
+            self.width(),
+            self.crop.y1 - self.crop.y0,
+            v.iter().map(|s| f(*s * k)),
+        )
     }
 
     /// The picture so far.
     pub fn film(&self) -> Film {
-        self.mean(&self.sum)
+        self.mean(&self.sum, |c| c)
     }
 
     /// Mean first-hit albedo.
     pub fn albedo_film(&self) -> Film {
-        self.mean(&self.albedo)
+        self.mean(&self.albedo, |c| c)
     }
 
     /// Mean first-hit normal (unit length where anything was hit; zero elsewhere),
     /// components in -1..1.
     pub fn normal_film(&self) -> Film {
-        let mut f = self.mean(&self.normal);
-        for p in &mut f.pixels {
-            *p = p.normalize_or_zero();
-        }
-        f
+        self.mean(&self.normal, DVec3::normalize_or_zero)
     }
 }
 

@@ -25,7 +25,7 @@ pub fn lookup(im: &ImageMap, p: DVec3, uv: Option<DVec2>) -> Colour {
         filter: a.filter + (b.filter - a.filter) * t,
         transmit: a.transmit + (b.transmit - a.transmit) * t,
     };
-    sample(im, u, v, |x, y| pixel(im, x, y), lerp)
+    sample(im, u, v, |x, y| im.pixel(wrap(im, x, y)), lerp)
 }
 
 /// The image coordinates (u, v) of pattern-space point `p`: by the map's
@@ -64,7 +64,7 @@ fn sample<T: Copy>(
     lerp: impl Fn(T, T, f64) -> T,
 ) -> T {
     let (u, v) = (u.rem_euclid(1.0), v.rem_euclid(1.0));
-    let (w, h) = (im.width as f64, im.height as f64);
+    let (w, h) = (f64::from(im.width()), f64::from(im.height()));
     let x = u * w;
     let y = (1.0 - v) * h;
     if !im.interpolate {
@@ -83,9 +83,9 @@ fn sample<T: Copy>(
 
 /// Index of pixel (x, y) in the pixel array, wrapping around the edges.
 fn wrap(im: &ImageMap, x: i64, y: i64) -> usize {
-    let x = x.rem_euclid(im.width as i64) as usize;
-    let y = y.rem_euclid(im.height as i64) as usize;
-    y * im.width as usize + x
+    let x = x.rem_euclid(i64::from(im.width())) as usize;
+    let y = y.rem_euclid(i64::from(im.height())) as usize;
+    y * im.width() as usize + x
 }
 
 /// The value in [0, 1] an `image_pattern` (or `bump_map`) reads at
@@ -99,10 +99,10 @@ pub fn value_at(ip: &ImagePattern, p: DVec3) -> f64 {
     }
     let at = |x: i64, y: i64| -> f64 {
         let i = wrap(im, x, y);
-        match (ip.source, &ip.indices) {
-            (ImageUse::Index, Some(idx)) => f64::from(idx[i]) / 255.0,
-            (ImageUse::Alpha, _) => 1.0 - im.pixels[i].transmit,
-            _ => super::patterns::grey(im.pixels[i]),
+        match (ip.source, im.picture.index(i)) {
+            (ImageUse::Index, Some(k)) => f64::from(k) / 255.0,
+            (ImageUse::Alpha, _) => 1.0 - im.pixel(i).transmit,
+            _ => super::patterns::grey(im.pixel(i)),
         }
     };
     sample(im, u, v, at, |a, b, t| a + (b - a) * t)
@@ -119,43 +119,37 @@ pub fn index_at(ip: &ImagePattern, p: DVec3) -> usize {
     }
     let at = |x: i64, y: i64| -> usize {
         let i = wrap(im, x, y);
-        match &ip.indices {
-            Some(idx) => usize::from(idx[i]),
-            None => (super::patterns::grey(im.pixels[i]) * 255.0).round() as usize,
+        match im.picture.index(i) {
+            Some(k) => usize::from(k),
+            None => (super::patterns::grey(im.pixel(i)) * 255.0).round() as usize,
         }
     };
     let (u, v) = (u.rem_euclid(1.0), v.rem_euclid(1.0));
-    let x = (u * im.width as f64).floor() as i64;
-    let y = ((1.0 - v) * im.height as f64).floor() as i64;
+    let x = (u * f64::from(im.width())).floor() as i64;
+    let y = ((1.0 - v) * f64::from(im.height())).floor() as i64;
     at(x, y)
-}
-
-/// Pixel (x, y), wrapping around the edges.
-fn pixel(im: &ImageMap, x: i64, y: i64) -> Colour {
-    im.pixels[wrap(im, x, y)]
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::{Depth, Picture, Samples, Tones, Transfer};
+    use std::sync::Arc;
 
     fn two_by_two() -> ImageMap {
-        ImageMap {
-            width: 2,
-            height: 2,
-            pixels: vec![
-                Colour::rgb(1.0, 0.0, 0.0),
-                Colour::rgb(0.0, 1.0, 0.0),
-                Colour::rgb(0.0, 0.0, 1.0),
-                Colour::rgb(1.0, 1.0, 1.0),
-            ],
-            map_type: 0,
-            interpolate: false,
-            once: false,
-            uv_mapping: false,
-            see_through: false,
-            mods: None,
-        }
+        let picture = Picture::new(
+            2,
+            2,
+            Samples::Eight {
+                channels: 3,
+                data: vec![255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255],
+            },
+        )
+        .unwrap();
+        ImageMap::new(
+            Arc::new(picture),
+            Arc::new(Tones::new(Depth::Eight, Transfer::AsStored)),
+        )
     }
 
     #[test]
@@ -187,5 +181,64 @@ mod tests {
         };
         let c = lookup(&im, DVec3::new(9.0, 9.0, 9.0), Some(DVec2::new(0.75, 0.75)));
         assert_eq!(c.rgb, DVec3::Y);
+    }
+
+    /// [`ImageMap::find_see_through`] agrees with looking at every pixel.
+    #[test]
+    fn see_through_is_found_without_reading_every_pixel() {
+        use crate::scene::IndexClear;
+        let rgba = Picture::new(
+            2,
+            1,
+            Samples::Eight {
+                channels: 4,
+                data: vec![9, 9, 9, 255, 9, 9, 9, 200],
+            },
+        )
+        .unwrap();
+        let mut palette = Box::new([[0, 0, 0, 255]; 256]);
+        palette[1] = [5, 5, 5, 100];
+        let indexed = Picture::new(
+            3,
+            1,
+            Samples::Indexed {
+                indices: vec![0, 1, 0],
+                palette,
+            },
+        )
+        .unwrap();
+        let opaque = two_by_two().picture;
+        let mut table = [IndexClear::default(); 256];
+        table[1].transmit = Some(0.0);
+        table[0].filter = Some(0.25);
+        let tables = [None, Some(Arc::new(table))];
+        for picture in [rgba, indexed].map(Arc::new).into_iter().chain([opaque]) {
+            for filter_all in [None, Some(0.0), Some(-0.5), Some(0.5)] {
+                for transmit_all in [None, Some(0.0), Some(-0.1)] {
+                    for by_index in &tables {
+                        let im = ImageMap {
+                            filter_all,
+                            transmit_all,
+                            by_index: by_index.clone().filter(|_| picture.palette().is_some()),
+                            ..ImageMap::new(
+                                picture.clone(),
+                                Arc::new(Tones::new(picture.depth(), Transfer::AsStored)),
+                            )
+                        };
+                        let n = picture.pixels() as usize;
+                        let scan = (0..n).any(|i| {
+                            let c = im.pixel(i);
+                            c.filter + c.transmit > 0.0
+                        });
+                        assert_eq!(
+                            im.find_see_through(),
+                            scan,
+                            "{picture:?} {filter_all:?} {transmit_all:?} {:?}",
+                            im.by_index.is_some()
+                        );
+                    }
+                }
+            }
+        }
     }
 }

@@ -84,8 +84,8 @@ pub(super) fn perturb_blend(
                 1.0
             };
             let per_pixel = DVec3::new(
-                unit / f64::from(ip.image.width.max(1)),
-                unit / f64::from(ip.image.height.max(1)),
+                unit / f64::from(ip.image.width().max(1)),
+                unit / f64::from(ip.image.height().max(1)),
                 0.0,
             );
             let h = |x: DVec3| patterns::value(&normal.kind, x, &normal.mods);

@@ -1,0 +1,305 @@
+//! A [`Film`] encoded into the bytes of an image file, streaming: PNG and PPM
+//! rows are converted a band at a time (the band's rows in parallel) and
+//! written in order, OpenEXR samples are computed as the encoder asks for them,
+//! and only Radiance HDR, whose encoder takes the whole picture, gets one
+//! float copy of it.
+
+use super::{decode_working, to_file, BitDepth, Format, OutputOptions};
+use crate::render::Film;
+use glam::Vec3;
+use rayon::prelude::*;
+use std::io::{Seek, Write};
+
+/// Rows converted together before they are written.
+const BAND_ROWS: usize = 64;
+
+/// Bytes of compressed data in each PNG `IDAT` chunk.
+const PNG_CHUNK: usize = 1 << 20;
+
+/// What can go wrong while encoding.
+pub(super) type EncodeResult = Result<(), Box<dyn std::error::Error + Send + Sync>>;
+
+/// Writes `film` to `out` as `format` (see [`super::write_as`]).
+pub(super) fn encode(
+    out: &mut (impl Write + Seek),
+    film: &Film,
+    format: Format,
+    opts: &OutputOptions,
+) -> EncodeResult {
+    match format {
+        Format::Png => write_png(out, film, opts),
+        Format::Ppm => write_ppm(out, film, opts),
+        Format::Exr => write_exr(out, film, opts),
+        Format::Hdr => write_hdr(out, film, opts),
+    }
+}
+
+/// The file samples of `row` in `dst`: RGB interleaved, 8-bit, or 16-bit
+/// big-endian (as PNG and PPM store them).
+fn encode_row(row: &[Vec3], dst: &mut [u8], opts: &OutputOptions) {
+    let samples = row.iter().flat_map(|c| c.to_array());
+    let file = |v: f32| to_file(f64::from(v), opts.assumed_gamma, opts.gamma);
+    match opts.bit_depth {
+        BitDepth::Eight => {
+            for (v, d) in samples.zip(dst) {
+                *d = (file(v) * 255.0).round() as u8;
+            }
+        }
+        BitDepth::Sixteen => {
+            for (v, d) in samples.zip(dst.chunks_exact_mut(2)) {
+                d.copy_from_slice(&((file(v) * 65535.0).round() as u16).to_be_bytes());
+            }
+        }
+    }
+}
+
+/// The integer file samples of `film`, [`BAND_ROWS`] rows at a time, passed to
+/// `sink` top to bottom.
+fn integer_rows(
+    film: &Film,
+    opts: &OutputOptions,
+    mut sink: impl FnMut(&[u8]) -> std::io::Result<()>,
+) -> std::io::Result<()> {
+    let per_sample = match opts.bit_depth {
+        BitDepth::Eight => 1,
+        BitDepth::Sixteen => 2,
+    };
+    let row_bytes = film.width as usize * 3 * per_sample;
+    let height = film.height as usize;
+    let mut buf = vec![0u8; row_bytes * BAND_ROWS.min(height)];
+    for first in (0..height).step_by(BAND_ROWS) {
+        let rows = BAND_ROWS.min(height - first);
+        let band = &mut buf[..rows * row_bytes];
+        // A few `pow`s per sample: in parallel, each row the same whatever the threads.
+        band.par_chunks_mut(row_bytes)
+            .enumerate()
+            .for_each(|(j, dst)| encode_row(film.row((first + j) as u32), dst, opts));
+        sink(band)?;
+    }
+    Ok(())
+}
+
+/// An 8- or 16-bit RGB PNG, compressed as `image`'s PNG encoder does
+/// (balanced deflate, adaptive filters), its rows streamed into the encoder.
+fn write_png(out: &mut impl Write, film: &Film, opts: &OutputOptions) -> EncodeResult {
+    let mut e = png::Encoder::new(out, film.width, film.height);
+    e.set_color(png::ColorType::Rgb);
+    e.set_depth(match opts.bit_depth {
+        BitDepth::Eight => png::BitDepth::Eight,
+        BitDepth::Sixteen => png::BitDepth::Sixteen,
+    });
+    e.set_compression(png::Compression::Balanced);
+    e.set_filter(png::Filter::Adaptive);
+    let mut writer = e.write_header()?;
+    let mut stream = writer.stream_writer_with_size(PNG_CHUNK)?;
+    integer_rows(film, opts, |band| stream.write_all(band))?;
+    stream.finish()?;
+    writer.finish()?;
+    Ok(())
+}
+
+/// A binary PPM (P6): maximum value 255 or 65535, 16-bit samples big-endian as
+/// the format requires.
+fn write_ppm(out: &mut impl Write, film: &Film, opts: &OutputOptions) -> EncodeResult {
+    let max = match opts.bit_depth {
+        BitDepth::Eight => 255,
+        BitDepth::Sixteen => 65535,
+    };
+    write!(out, "P6\n{} {}\n{max}\n", film.width, film.height)?;
+    integer_rows(film, opts, |band| out.write_all(band))?;
+    Ok(())
+}
+
+/// Linear light of working value `v` (decoded with `assumed_gamma`, negatives
+/// 0, no upper clamp; anything not finite 0): what EXR and HDR hold.
+fn linear(v: f32, opts: &OutputOptions) -> f32 {
+    let l = decode_working(f64::from(v), opts.assumed_gamma);
+    if l.is_finite() {
+        l as f32
+    } else {
+        0.0
+    }
+}
+
+/// A 32-bit float RGB OpenEXR file, written as `image`'s OpenEXR encoder
+/// writes one, each sample computed when the encoder asks for it.
+fn write_exr(out: &mut (impl Write + Seek), film: &Film, opts: &OutputOptions) -> EncodeResult {
+    use exr::prelude::{Image, SpecificChannels, Vec2, WritableImage};
+    let (w, h) = (film.width as usize, film.height as usize);
+    Image::from_channels(
+        (w, h),
+        SpecificChannels::rgb(|p: Vec2<usize>| {
+            let c = film.pixels[p.flat_index_for_size(Vec2(w, h))];
+            (linear(c.x, opts), linear(c.y, opts), linear(c.z, opts))
+        }),
+    )
+    .write()
+    .to_buffered(out)?;
+    Ok(())
+}
+
+/// A Radiance RGBE file (its encoder takes the whole picture: one float copy).
+fn write_hdr(out: &mut impl Write, film: &Film, opts: &OutputOptions) -> EncodeResult {
+    let px: Vec<image::Rgb<f32>> = film
+        .pixels
+        .iter()
+        .map(|c| image::Rgb(c.to_array().map(|v| linear(v, opts))))
+        .collect();
+    image::codecs::hdr::HdrEncoder::new(out).encode(
+        &px,
+        film.width as usize,
+        film.height as usize,
+    )?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::output::Gamma;
+    use image::codecs::hdr::HdrEncoder;
+    use image::codecs::openexr::OpenExrEncoder;
+    use image::codecs::png::PngEncoder;
+    use image::{ExtendedColorType, ImageEncoder};
+    use std::io::Cursor;
+
+    /// A small film of awkward values: below 0, above 1, not finite, and
+    /// steps through the range.
+    fn film() -> Film {
+        let (w, h) = (7u32, 5u32);
+        let mut pixels: Vec<Vec3> = (0..w * h)
+            .map(|i| {
+                let t = i as f32 / (w * h) as f32;
+                Vec3::new(t, (t * 3.7).fract() * 1.3 - 0.1, 1.0 - t * t)
+            })
+            .collect();
+        pixels[3] = Vec3::new(f32::NAN, f32::INFINITY, -2.0);
+        pixels[4] = Vec3::new(1e30, 0.5, 0.0031308);
+        Film {
+            width: w,
+            height: h,
+            pixels,
+        }
+    }
+
+    /// The encoders as they were before films were single precision and
+    /// streamed: whole-picture sample buffers handed to `image`'s encoders.
+    fn reference(film: &Film, format: Format, opts: &OutputOptions) -> Vec<u8> {
+        let samples: Vec<f64> = film
+            .pixels
+            .iter()
+            .flat_map(|c| c.to_array())
+            .map(|v| to_file(f64::from(v), opts.assumed_gamma, opts.gamma))
+            .collect();
+        let floats: Vec<f32> = film
+            .pixels
+            .iter()
+            .flat_map(|c| c.to_array())
+            .map(|v| linear(v, opts))
+            .collect();
+        let mut out = Cursor::new(Vec::new());
+        let (w, h) = (film.width, film.height);
+        match format {
+            Format::Png => {
+                let (bytes, colour) = match opts.bit_depth {
+                    BitDepth::Eight => (
+                        samples.iter().map(|v| (v * 255.0).round() as u8).collect(),
+                        ExtendedColorType::Rgb8,
+                    ),
+                    BitDepth::Sixteen => (
+                        samples
+                            .iter()
+                            .flat_map(|v| ((v * 65535.0).round() as u16).to_ne_bytes())
+                            .collect::<Vec<u8>>(),
+                        ExtendedColorType::Rgb16,
+                    ),
+                };
+                PngEncoder::new(&mut out)
+                    .write_image(&bytes, w, h, colour)
+                    .unwrap();
+            }
+            Format::Ppm => {
+                let max = if opts.bit_depth == BitDepth::Eight {
+                    255
+                } else {
+                    65535
+                };
+                write!(out, "P6\n{w} {h}\n{max}\n").unwrap();
+                let bytes: Vec<u8> = match opts.bit_depth {
+                    BitDepth::Eight => samples.iter().map(|v| (v * 255.0).round() as u8).collect(),
+                    BitDepth::Sixteen => samples
+                        .iter()
+                        .flat_map(|v| ((v * 65535.0).round() as u16).to_be_bytes())
+                        .collect(),
+                };
+                out.write_all(&bytes).unwrap();
+            }
+            Format::Exr => {
+                let bytes: Vec<u8> = floats.iter().flat_map(|v| v.to_ne_bytes()).collect();
+                OpenExrEncoder::new(&mut out)
+                    .write_image(&bytes, w, h, ExtendedColorType::Rgb32F)
+                    .unwrap();
+            }
+            Format::Hdr => {
+                let px: Vec<image::Rgb<f32>> = floats
+                    .chunks_exact(3)
+                    .map(|c| image::Rgb([c[0], c[1], c[2]]))
+                    .collect();
+                HdrEncoder::new(&mut out)
+                    .encode(&px, w as usize, h as usize)
+                    .unwrap();
+            }
+        }
+        out.into_inner()
+    }
+
+    /// A PNG's size, colour type, bit depth and samples.
+    fn decode_png(bytes: &[u8]) -> (u32, u32, png::ColorType, png::BitDepth, Vec<u8>) {
+        let mut reader = png::Decoder::new(Cursor::new(bytes)).read_info().unwrap();
+        let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+        let info = reader.next_frame(&mut buf).unwrap();
+        buf.truncate(info.buffer_size());
+        (
+            info.width,
+            info.height,
+            info.color_type,
+            info.bit_depth,
+            buf,
+        )
+    }
+
+    #[test]
+    fn streamed_encoding_gives_the_bytes_of_whole_picture_encoding() {
+        let film = film();
+        let mut big = film.clone();
+        // More rows than a band, so bands join up.
+        big.height = 2 * BAND_ROWS as u32 + 3;
+        big.pixels = (0..big.height).flat_map(|_| film.row(1).to_vec()).collect();
+        for f in [&film, &big] {
+            for assumed_gamma in [None, Some(2.2)] {
+                for gamma in [Gamma::Srgb, Gamma::Power(1.8), Gamma::Power(1.0)] {
+                    for bit_depth in [BitDepth::Eight, BitDepth::Sixteen] {
+                        let opts = OutputOptions {
+                            gamma,
+                            bit_depth,
+                            assumed_gamma,
+                        };
+                        for format in Format::ALL {
+                            let mut out = Cursor::new(Vec::new());
+                            encode(&mut out, f, format, &opts).unwrap();
+                            let (got, want) = (out.into_inner(), reference(f, format, &opts));
+                            let what = format!("{format:?} {opts:?} {}x{}", f.width, f.height);
+                            if format == Format::Png {
+                                // The same picture (the compressed stream may be cut
+                                // into chunks differently).
+                                assert_eq!(decode_png(&got), decode_png(&want), "{what}");
+                            } else {
+                                assert!(got == want, "{what}");
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
