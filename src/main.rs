@@ -15,7 +15,13 @@ fn main() {
             } else {
                 cli::EXIT_OK
             };
-            let _ = e.print();
+            let argv: Vec<String> = std::env::args().collect();
+            match cli::case_twin_error(&e, &argv) {
+                Some(message) => eprintln!("{message}"),
+                None => {
+                    let _ = e.print();
+                }
+            }
             std::process::exit(code);
         }
     };

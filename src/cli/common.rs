@@ -1,7 +1,7 @@
 //! The front half of the pipeline for the CLI: load, parse, evaluate, print diagnostics.
 
 use super::{MessageFormat, SceneArgs};
-use rts::diag::{render as diag_render, Diagnostic};
+use rts::diag::{codes, render as diag_render, Diagnostic};
 use rts::eval::{self, EvalOptions};
 use rts::scene::Scene;
 use rts::source::{FileAccess, SourceMap};
@@ -151,16 +151,103 @@ pub fn load(path: &Path, options: &EvalOptions) -> Result<Loaded, String> {
 
 /// Prints diagnostics in the chosen format: human to stderr, short and JSON to stdout.
 pub fn print(diags: &[Diagnostic], sources: &SourceMap, format: MessageFormat) {
-    let stdout = std::io::stdout();
-    let mut out = stdout.lock();
-    let stderr = std::io::stderr();
-    let color = stderr.is_terminal() && std::env::var_os("NO_COLOR").is_none();
-    let mut err = stderr.lock();
-    for d in diags {
-        let _ = match format {
-            MessageFormat::Human => write!(err, "{}", diag_render::human(d, sources, color)),
-            MessageFormat::Short => writeln!(out, "{}", diag_render::short(d, sources)),
-            MessageFormat::Json => writeln!(out, "{}", diag_render::json(d, sources)),
-        };
+    Messages::new(format, false).print(diags, sources, None);
+}
+
+/// Prints the diagnostics of the evaluations of one scene: human to stderr,
+/// short and JSON to stdout. Each message is printed once however many
+/// evaluations (the frames of a sequence) report it; a frame's messages are
+/// headed with its number; `-q` leaves out the scene's `#debug` text (in
+/// the human format).
+pub struct Messages {
+    format: MessageFormat,
+    quiet: bool,
+    seen: rustc_hash::FxHashSet<u64>,
+}
+
+impl Messages {
+    /// A printer in `format`; `quiet` drops `#debug` text.
+    pub fn new(format: MessageFormat, quiet: bool) -> Messages {
+        Messages {
+            format,
+            quiet,
+            seen: Default::default(),
+        }
+    }
+
+    /// Prints the diagnostics not printed before; `frame`: the frame of a
+    /// sequence they come from.
+    pub fn print(&mut self, diags: &[Diagnostic], sources: &SourceMap, frame: Option<u32>) {
+        use std::hash::{Hash, Hasher};
+        let stdout = std::io::stdout();
+        let mut out = stdout.lock();
+        let stderr = std::io::stderr();
+        let color = stderr.is_terminal() && std::env::var_os("NO_COLOR").is_none();
+        let mut err = stderr.lock();
+        // A frame's `#debug` texts run together until a line ends, as they
+        // would print; its lines are then headed with the frame number.
+        let mut debug_text = String::new();
+        for d in diags {
+            // -q silences `#debug` as it prints for people; tools that asked
+            // for short or JSON lines still get it.
+            if self.quiet && d.code == codes::USER_DEBUG && self.format == MessageFormat::Human {
+                continue;
+            }
+            let mut h = rustc_hash::FxHasher::default();
+            (d.code, d.span, &d.message).hash(&mut h);
+            if !self.seen.insert(h.finish()) {
+                continue;
+            }
+            let _ = match self.format {
+                MessageFormat::Human if frame.is_some() && d.code == codes::USER_DEBUG => {
+                    debug_text.push_str(&diag_render::human(d, sources, color));
+                    Ok(())
+                }
+                MessageFormat::Human => {
+                    if !debug_text.is_empty() {
+                        let _ = write!(err, "{}", with_frame(&debug_text, true, frame));
+                        debug_text.clear();
+                    }
+                    let text = diag_render::human(d, sources, color);
+                    write!(
+                        err,
+                        "{}",
+                        with_frame(&text, d.code == codes::USER_WARNING, frame)
+                    )
+                }
+                MessageFormat::Short => writeln!(out, "{}", diag_render::short(d, sources)),
+                MessageFormat::Json => {
+                    let mut j = diag_render::json(d, sources);
+                    if let Some(f) = frame {
+                        j["frame"] = f.into();
+                    }
+                    writeln!(out, "{j}")
+                }
+            };
+        }
+        if !debug_text.is_empty() {
+            let _ = write!(err, "{}", with_frame(&debug_text, true, frame));
+        }
+    }
+}
+
+/// A human report headed with the frame it comes from: each line of a scene's
+/// own text (`lines`: `#debug`, `#warning`) starts with `frame N: `, other
+/// reports get a heading line.
+fn with_frame(text: &str, lines: bool, frame: Option<u32>) -> String {
+    let Some(f) = frame else {
+        return text.to_string();
+    };
+    if lines {
+        let mut s: String = text
+            .split_inclusive('\n')
+            .map(|l| format!("frame {f}: {l}"))
+            .collect();
+        if !s.ends_with('\n') {
+            s.push('\n');
+        }
+        s
+    } else {
+        format!("frame {f}:\n{text}")
     }
 }

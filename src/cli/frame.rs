@@ -45,8 +45,10 @@ pub(crate) struct Renderer<'a> {
     build_cache: rts::build::BuildCache,
     /// Whether to draw the per-image progress bar.
     pub show_progress: bool,
-    /// Whether an evaluation's diagnostics were shown (later ones show only errors).
-    printed: bool,
+    /// Prints each evaluation's diagnostics (a message once for all frames).
+    pub messages: common::Messages,
+    /// Whether the frames are a sequence's (their messages say which frame).
+    pub sequence: bool,
 }
 
 impl<'a> Renderer<'a> {
@@ -66,7 +68,8 @@ impl<'a> Renderer<'a> {
             pool,
             build_cache: rts::build::BuildCache::default(),
             show_progress: !args.quiet && stats::stderr_is_terminal(),
-            printed: false,
+            messages: common::Messages::new(args.scene.message_format, args.quiet),
+            sequence: false,
         }
     }
 
@@ -98,10 +101,8 @@ impl<'a> Renderer<'a> {
                 None => {
                     let (scene, diags) = parsed.eval(options);
                     let failed = rts::diag::has_errors(&diags) || scene.is_none();
-                    if failed || !self.printed {
-                        common::print(&diags, &parsed.sources, self.args.scene.message_format);
-                        self.printed = true;
-                    }
+                    let label = self.sequence.then_some(frame);
+                    self.messages.print(&diags, &parsed.sources, label);
                     if failed {
                         return Err(EXIT_ERRORS);
                     }

@@ -13,6 +13,7 @@ mod render;
 mod sequence;
 mod size;
 mod stats;
+mod unused;
 mod watch;
 
 use clap::{Parser, Subcommand, ValueEnum};
@@ -64,60 +65,86 @@ pub enum MessageFormat {
 #[derive(Debug, clap::Args, Clone)]
 pub struct SceneArgs {
     /// Define NAME as VALUE before the scene is read (`-D Radius=2`, `-D Name="\"a\""`).
-    #[arg(short = 'D', value_name = "NAME=VALUE")]
+    #[arg(help_heading = "Files", short = 'D', value_name = "NAME=VALUE")]
     pub define: Vec<String>,
     /// Search DIR for #include files (after the including file's folder).
-    #[arg(short = 'I', value_name = "DIR")]
+    #[arg(help_heading = "Files", short = 'I', value_name = "DIR")]
     pub include: Vec<PathBuf>,
     /// Also allow the scene to read files under DIR.
-    #[arg(long, value_name = "DIR")]
+    #[arg(help_heading = "Files", long, value_name = "DIR")]
     pub allow_path: Vec<PathBuf>,
     /// Allow the scene to read any file.
-    #[arg(long)]
+    #[arg(help_heading = "Files", long)]
     pub allow_any_path: bool,
     /// How to print diagnostics.
-    #[arg(long, value_enum, default_value_t = MessageFormat::Human)]
+    #[arg(help_heading = "Output", long, value_enum, default_value_t = MessageFormat::Human)]
     pub message_format: MessageFormat,
     /// Stop after this many loop iterations in total.
-    #[arg(long, value_name = "N", default_value_t = 20_000_000)]
+    #[arg(
+        help_heading = "Limits",
+        long,
+        value_name = "N",
+        default_value_t = 20_000_000
+    )]
     pub max_loop_iterations: u64,
     /// Stop when macros nest deeper than this.
-    #[arg(long, value_name = "N", default_value_t = 1_000)]
+    #[arg(
+        help_heading = "Limits",
+        long,
+        value_name = "N",
+        default_value_t = 1_000
+    )]
     pub max_macro_depth: usize,
     /// Refuse arrays with more elements than this.
-    #[arg(long, value_name = "N", default_value_t = 1 << 22)]
+    #[arg(help_heading = "Limits", long, value_name = "N", default_value_t = 1 << 22)]
     pub max_array_size: usize,
     /// Refuse objects nested deeper than this (CSG inside CSG, clipped_by;
     /// unions of unions are flattened and do not count).
-    #[arg(long, value_name = "N", default_value_t = 10_000)]
+    #[arg(
+        help_heading = "Limits",
+        long,
+        value_name = "N",
+        default_value_t = 10_000
+    )]
     pub max_object_depth: u32,
     /// Stop when evaluating the scene has taken this much memory (e.g. 2G,
     /// 512M) [default: half the machine's memory, at most 8G].
-    #[arg(long, value_name = "SIZE", value_parser = size::parse_size)]
+    #[arg(help_heading = "Limits", long, value_name = "SIZE", value_parser = size::parse_size)]
     pub max_memory: Option<u64>,
     /// Stop after this many macro calls in all.
-    #[arg(long, value_name = "N", default_value_t = 10_000_000)]
+    #[arg(
+        help_heading = "Limits",
+        long,
+        value_name = "N",
+        default_value_t = 10_000_000
+    )]
     pub max_macro_calls: u64,
     /// Refuse strings longer than this (e.g. 64M).
-    #[arg(long, value_name = "SIZE", value_parser = size::parse_size, default_value = "64M")]
+    #[arg(help_heading = "Limits", long, value_name = "SIZE", value_parser = size::parse_size, default_value = "64M")]
     pub max_string_length: u64,
     /// Stop evaluating after this many errors.
-    #[arg(long, value_name = "N", default_value_t = 100)]
+    #[arg(help_heading = "Limits", long, value_name = "N", default_value_t = 100)]
     pub max_errors: usize,
     /// Refuse a scene or #include file (or a file #fopen reads) larger than SIZE
     /// (`64M`, `1G`).
-    #[arg(long, value_name = "SIZE", default_value = "256M", value_parser = size::parse_size)]
+    #[arg(help_heading = "Limits", long, value_name = "SIZE", default_value = "256M", value_parser = size::parse_size)]
     pub max_source_size: u64,
     /// Stop when the files the scene writes with #write would hold more than SIZE
     /// in all.
-    #[arg(long, value_name = "SIZE", default_value = "256M", value_parser = size::parse_size)]
+    #[arg(help_heading = "Limits", long, value_name = "SIZE", default_value = "256M", value_parser = size::parse_size)]
     pub max_write: u64,
     /// Most pixels the image files a scene reads may hold together (each file
     /// once); checked before decoding.
-    #[arg(long, value_name = "N", default_value_t = rts::eval::DEFAULT_MAX_IMAGE_PIXELS)]
+    #[arg(help_heading = "Limits", long, value_name = "N", default_value_t = rts::eval::DEFAULT_MAX_IMAGE_PIXELS)]
     pub max_image_pixels: u64,
-    /// Evaluate (and render) the scene as a still at this `clock` value.
-    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    /// The value of `clock` in the scene: a still at that time (without it,
+    /// `clock` is 0, or a frame's time when rendering a sequence).
+    #[arg(
+        help_heading = "Animation",
+        long,
+        value_name = "T",
+        allow_negative_numbers = true
+    )]
     pub clock: Option<f64>,
 }
 
@@ -132,6 +159,44 @@ pub enum Command {
     Lsp(lsp::LspArgs),
     /// Re-render a scene whenever it or a file it includes changes.
     Watch(watch::WatchArgs),
+}
+
+/// For an unknown short option whose other-case twin exists (`-w` for `-W`),
+/// the message to print instead of clap's (which suggests `-- -w`).
+pub fn case_twin_error(e: &clap::Error, argv: &[String]) -> Option<String> {
+    use clap::error::{ContextKind, ContextValue, ErrorKind};
+    use clap::CommandFactory;
+    if e.kind() != ErrorKind::UnknownArgument {
+        return None;
+    }
+    let Some(ContextValue::String(arg)) = e.get(ContextKind::InvalidArg) else {
+        return None;
+    };
+    let mut chars = arg.strip_prefix('-')?.chars();
+    let (Some(c), None) = (chars.next(), chars.next()) else {
+        return None;
+    };
+    let twin = if c.is_ascii_lowercase() {
+        c.to_ascii_uppercase()
+    } else {
+        c.to_ascii_lowercase()
+    };
+    let cli = Cli::command();
+    let sub = argv.iter().skip(1).find_map(|a| cli.find_subcommand(a))?;
+    let known = sub.get_arguments().find(|a| a.get_short() == Some(twin))?;
+    let long = known
+        .get_long()
+        .map(|l| format!(" (--{l})"))
+        .unwrap_or_default();
+    let name = sub.get_name().to_string();
+    let usage = sub
+        .clone()
+        .bin_name(format!("rts {name}"))
+        .render_usage()
+        .to_string();
+    Some(format!(
+        "error: unknown option '{arg}'\n\n  tip: options are case-sensitive: did you mean '-{twin}'{long}?\n\n{usage}\n\nFor more information, try 'rts {name} --help'."
+    ))
 }
 
 /// Runs the command line and returns the exit status.

@@ -53,46 +53,87 @@ pub enum FilterName {
 pub struct PathArgs {
     /// Renderer: `classic` or `path` (default: `path` when the scene's
     /// global_settings has `path_tracing { }`, else `classic`).
-    #[arg(long, value_enum, value_name = "NAME")]
+    #[arg(
+        help_heading = "Path tracer (--integrator path)",
+        long,
+        value_enum,
+        value_name = "NAME"
+    )]
     pub integrator: Option<Integrator>,
     /// Path tracer: samples per pixel in total (default: the scene's `samples`, else 64).
-    #[arg(long, value_name = "N")]
+    #[arg(
+        help_heading = "Path tracer (--integrator path)",
+        long,
+        value_name = "N"
+    )]
     pub spp: Option<u32>,
     /// Path tracer: stop adding samples after this long (`90`, `90s`, `2m`, `1h`);
     /// with --spp, whichever comes first.
-    #[arg(long, value_name = "DURATION")]
-    pub time_limit: Option<String>,
+    #[arg(
+        help_heading = "Path tracer (--integrator path)",
+        long,
+        value_name = "DURATION",
+        value_parser = parse_duration
+    )]
+    pub time_limit: Option<Duration>,
     /// Path tracer: longest path in segments, counting the camera ray.
-    #[arg(long, value_name = "N")]
+    #[arg(
+        help_heading = "Path tracer (--integrator path)",
+        long,
+        value_name = "N"
+    )]
     pub max_depth: Option<u32>,
     /// Path tracer: largest channel value one sample may add (firefly clamp; 0 off).
-    #[arg(long, value_name = "X")]
+    #[arg(
+        help_heading = "Path tracer (--integrator path)",
+        long,
+        value_name = "X"
+    )]
     pub clamp: Option<f64>,
     /// Path tracer: reconstruction filter.
-    #[arg(long, value_enum, value_name = "NAME")]
+    #[arg(
+        help_heading = "Path tracer (--integrator path)",
+        long,
+        value_enum,
+        value_name = "NAME"
+    )]
     pub pixel_filter: Option<FilterName>,
     /// Path tracer: continue from the checkpoint (see --checkpoint) up to the new
     /// --spp / --time-limit; the result equals an uninterrupted render.
-    #[arg(long)]
+    #[arg(help_heading = "Path tracer (--integrator path)", long)]
     pub resume: bool,
     /// Path tracer: checkpoint file (default OUT.ckpt), written with every partial
     /// image when --time-limit, --resume or this option is given.
-    #[arg(long, value_name = "FILE")]
+    #[arg(
+        help_heading = "Path tracer (--integrator path)",
+        long,
+        value_name = "FILE"
+    )]
     pub checkpoint: Option<PathBuf>,
-    /// Path tracer: seconds between partial images (and checkpoints).
-    #[arg(long, value_name = "SECONDS", default_value_t = 10.0)]
-    pub save_every: f64,
+    /// Path tracer: seconds between partial images (and checkpoints) [default: 10].
+    #[arg(
+        help_heading = "Path tracer (--integrator path)",
+        long,
+        value_name = "SECONDS"
+    )]
+    pub save_every: Option<f64>,
     /// Path tracer: also write first-hit AOVs as EXR next to the output
     /// (`albedo`, `normal`, comma-separated): OUT.albedo.exr, OUT.normal.exr.
-    #[arg(long, value_name = "LIST", value_delimiter = ',')]
+    #[arg(
+        help_heading = "Path tracer (--integrator path)",
+        long,
+        value_name = "LIST",
+        value_delimiter = ','
+    )]
     pub aov: Vec<String>,
     /// Path tracer: denoise with Intel Open Image Denoise (needs the `oidn` cargo
     /// feature and the library; uses the albedo and normal AOVs).
-    #[arg(long)]
+    #[arg(help_heading = "Path tracer (--integrator path)", long)]
     pub denoise: bool,
 }
 
-/// `90`, `90s`, `1.5m`, `2h` as a duration.
+/// `90`, `90s`, `1.5m`, `2h` as a duration (checked when the command line is
+/// read, whichever renderer runs).
 pub fn parse_duration(s: &str) -> Result<Duration, String> {
     let t = s.trim();
     let (num, unit) = match t.find(|c: char| c.is_ascii_alphabetic()) {
@@ -102,15 +143,19 @@ pub fn parse_duration(s: &str) -> Result<Duration, String> {
     let n: f64 = num
         .trim()
         .parse()
-        .map_err(|_| format!("--time-limit {s}: expected a duration such as 60s, 2m or 1h"))?;
+        .map_err(|_| "expected a duration such as 60s, 2m or 1h".to_string())?;
     let k = match unit {
         "s" => 1.0,
         "m" | "min" => 60.0,
         "h" => 3600.0,
-        _ => return Err(format!("--time-limit {s}: unit must be s, m or h")),
+        _ => {
+            return Err(format!(
+                "`{unit}` is not a unit: use s, m or h (e.g. 60s, 2m, 1h)"
+            ))
+        }
     };
-    if !(n.is_finite() && n > 0.0) {
-        return Err(format!("--time-limit {s}: must be positive"));
+    if !(n.is_finite() && n > 0.0 && n * k < 1e9) {
+        return Err("must be a positive duration (e.g. 60s, 2m, 1h)".into());
     }
     Ok(Duration::from_secs_f64(n * k))
 }
@@ -147,7 +192,7 @@ fn plan(p: &PathArgs, scene_pt: Option<&PathTracing>, output: &Path) -> Result<P
             FilterName::Gaussian => PixelFilter::Gaussian,
         };
     }
-    let limit = p.time_limit.as_deref().map(parse_duration).transpose()?;
+    let limit = p.time_limit;
     let spp = match (p.spp, limit) {
         (Some(0), _) => return Err("--spp must be at least 1".into()),
         (Some(n), _) if n > MAX_SPP => {
@@ -157,7 +202,8 @@ fn plan(p: &PathArgs, scene_pt: Option<&PathTracing>, output: &Path) -> Result<P
         (None, Some(_)) => MAX_SPP,
         (None, None) => base.samples,
     };
-    if !(p.save_every.is_finite() && p.save_every > 0.0) {
+    let save_every = p.save_every.unwrap_or(10.0);
+    if !(save_every.is_finite() && save_every > 0.0) {
         return Err("--save-every must be a positive number of seconds".into());
     }
     // Beside a streamed picture (`-o -`, a FIFO, /dev/null) there is no file to
@@ -201,7 +247,7 @@ fn plan(p: &PathArgs, scene_pt: Option<&PathTracing>, output: &Path) -> Result<P
         checkpoint,
         aov_albedo,
         aov_normal,
-        save_every: p.save_every,
+        save_every,
     })
 }
 

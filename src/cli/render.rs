@@ -40,104 +40,126 @@ pub struct RenderArgs {
     /// --format is given. Defaults to the scene's name in the current folder. `-`
     /// writes the image to standard output; a FIFO or device (`/dev/null`) is
     /// written directly (PNG unless --format says otherwise).
-    #[arg(short = 'o', long = "output", value_name = "OUT")]
+    #[arg(
+        help_heading = "Output",
+        short = 'o',
+        long = "output",
+        value_name = "OUT"
+    )]
     pub output: Option<PathBuf>,
     /// Output format: png, ppm, exr or hdr (overrides the extension).
-    #[arg(long, value_name = "FORMAT")]
+    #[arg(help_heading = "Output", long, value_name = "FORMAT")]
     pub format: Option<Format>,
     /// Image width in pixels.
-    #[arg(short = 'W', long = "width", default_value_t = 800)]
+    #[arg(
+        help_heading = "Output",
+        short = 'W',
+        long = "width",
+        default_value_t = 800
+    )]
     pub width: u32,
     /// Image height in pixels.
-    #[arg(short = 'H', long = "height", default_value_t = 600)]
+    #[arg(
+        help_heading = "Output",
+        short = 'H',
+        long = "height",
+        default_value_t = 600
+    )]
     pub height: u32,
     /// The file's gamma: `srgb` (POV-Ray 3.7's default) or a number (`1.0` writes linear
     /// values). Without it, a scene with neither `assumed_gamma` nor `#version 3.7` is
     /// written as POV-Ray does, with gamma handling off.
-    #[arg(long, value_name = "srgb|G")]
+    #[arg(help_heading = "Output", long, value_name = "srgb|G")]
     pub gamma: Option<Gamma>,
     /// Bits per channel in PNG and PPM files.
-    #[arg(long, value_name = "8|16", default_value_t = 8, value_parser = clap::value_parser!(u8).range(8..=16))]
+    #[arg(help_heading = "Output", long, value_name = "8|16", default_value_t = 8, value_parser = clap::value_parser!(u8).range(8..=16))]
     pub bit_depth: u8,
     /// Adaptive anti-aliasing like POV-Ray's +A (method 1): supersample pixels whose
     /// colour differs from a neighbour's by at least THRESHOLD (POV-Ray's default 0.3).
-    #[arg(long, value_name = "THRESHOLD")]
+    #[arg(help_heading = "Sampling", long, value_name = "THRESHOLD")]
     pub antialias: Option<f64>,
-    /// Anti-aliasing grid per side, 1 to 9 (POV-Ray's +R; 3 takes 3×3 more rays).
-    #[arg(long, value_name = "N", default_value_t = 3)]
-    pub aa_depth: u32,
+    /// Anti-aliasing grid per side, 1 to 9 (POV-Ray's +R; 3 takes 3×3 more rays)
+    /// [default: 3].
+    #[arg(help_heading = "Sampling", long, value_name = "N")]
+    pub aa_depth: Option<u32>,
     /// Anti-aliasing jitter, 0 (regular grid) to 1 (POV-Ray's +J, on with 1.0 by default).
-    #[arg(long, value_name = "AMOUNT", default_value_t = 1.0)]
-    pub jitter: f64,
-    /// Gamma applied to colours before the anti-aliasing comparison (POV-Ray's Antialias_Gamma).
-    #[arg(long, value_name = "G", default_value_t = 2.5)]
-    pub aa_gamma: f64,
+    #[arg(help_heading = "Sampling", long, value_name = "AMOUNT")]
+    pub jitter: Option<f64>,
+    /// Gamma applied to colours before the anti-aliasing comparison (POV-Ray's
+    /// Antialias_Gamma) [default: 2.5].
+    #[arg(help_heading = "Sampling", long, value_name = "G")]
+    pub aa_gamma: Option<f64>,
     /// Take N stratified samples in every pixel and average them (instead of --antialias).
-    #[arg(long, value_name = "N")]
+    #[arg(help_heading = "Sampling", long, value_name = "N")]
     pub samples: Option<u32>,
     /// Seed of every random number (jitter, sample positions).
-    #[arg(long, value_name = "N", default_value_t = 0)]
+    #[arg(help_heading = "Sampling", long, value_name = "N", default_value_t = 0)]
     pub seed: u64,
     /// Render frame N of the timeline as a still (its clock, frame_number and
     /// random numbers); a `#` run in -o becomes the frame number.
-    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    #[arg(
+        help_heading = "Animation",
+        long,
+        value_name = "N",
+        allow_negative_numbers = true
+    )]
     pub frame: Option<i64>,
     /// Frames to render, `A..B` (both included): a part of the scene's
     /// `animation { }` timeline, or the timeline itself (clock 0 to 1) when the
     /// scene has none.
-    #[arg(long, value_name = "A..B")]
-    pub frames: Option<String>,
+    #[arg(help_heading = "Animation", long, value_name = "A..B", value_parser = super::sequence::parse_range)]
+    pub frames: Option<(i64, i64)>,
     /// Frames per second (overrides the scene's `animation { fps }`; default 24).
-    #[arg(long, value_name = "F")]
+    #[arg(help_heading = "Animation", long, value_name = "F")]
     pub fps: Option<f64>,
     /// Cyclic animation (POV-Ray's +KC): the last frame stops one step before the
     /// first comes round again.
-    #[arg(long)]
+    #[arg(help_heading = "Animation", long)]
     pub cyclic: bool,
     /// Re-render every frame of a sequence, even those already complete.
-    #[arg(long)]
+    #[arg(help_heading = "Animation", long)]
     pub force: bool,
     /// Render only part I of N of a sequence (I from 1 to N; frames dealt out in
     /// turn), so N machines together render every frame once.
-    #[arg(long, value_name = "I/N")]
+    #[arg(help_heading = "Animation", long, value_name = "I/N")]
     pub shard: Option<String>,
     /// After a sequence, assemble its frames into an animated GIF.
-    #[arg(long, value_name = "OUT.gif")]
+    #[arg(help_heading = "Animation", long, value_name = "OUT.gif")]
     pub gif: Option<PathBuf>,
     /// After a sequence, assemble its frames into an animated PNG.
-    #[arg(long, value_name = "OUT.png")]
+    #[arg(help_heading = "Animation", long, value_name = "OUT.png")]
     pub apng: Option<PathBuf>,
     /// After a sequence, assemble its frames into an MP4 with ffmpeg (when installed).
-    #[arg(long, value_name = "OUT.mp4")]
+    #[arg(help_heading = "Animation", long, value_name = "OUT.mp4")]
     pub mp4: Option<PathBuf>,
     /// Quick look: half the width and height, one ray per pixel, no motion blur.
-    #[arg(long)]
+    #[arg(help_heading = "Animation", long)]
     pub preview: bool,
     /// Motion blur: keep the shutter open for this fraction of a frame (0 to 1),
     /// averaging the scene at several instants (overrides `animation { motion_blur }`).
-    #[arg(long, value_name = "SHUTTER")]
+    #[arg(help_heading = "Animation", long, value_name = "SHUTTER")]
     pub motion_blur: Option<f64>,
     /// Instants averaged for motion blur (default 8).
-    #[arg(long, value_name = "N")]
+    #[arg(help_heading = "Animation", long, value_name = "N")]
     pub motion_samples: Option<u32>,
     /// Render only the pixels X0..X1 × Y0..Y1 (0-based, ends excluded, top-left
     /// origin); the output image has the region's size.
-    #[arg(long, value_name = "X0,Y0,X1,Y1")]
+    #[arg(help_heading = "Output", long, value_name = "X0,Y0,X1,Y1")]
     pub crop: Option<String>,
     /// Write a debug pass instead of the shaded picture.
-    #[arg(long, value_enum, default_value_t = PassName::Beauty)]
+    #[arg(help_heading = "Output", long, value_enum, default_value_t = PassName::Beauty)]
     pub pass: PassName,
     /// Distance drawn black in --pass depth (default: the farthest hit).
-    #[arg(long, value_name = "D")]
+    #[arg(help_heading = "Output", long, value_name = "D")]
     pub depth_max: Option<f64>,
     /// Number of threads (default: all cores). The image is the same for any number.
-    #[arg(long, value_name = "N")]
+    #[arg(help_heading = "Sampling", long, value_name = "N")]
     pub threads: Option<usize>,
     /// Write the statistics as JSON to FILE (`-` for stdout).
-    #[arg(long, value_name = "FILE")]
+    #[arg(help_heading = "Output", long, value_name = "FILE")]
     pub stats_json: Option<PathBuf>,
     /// Print no progress bar and no statistics, only diagnostics.
-    #[arg(short, long)]
+    #[arg(help_heading = "Output", short, long)]
     pub quiet: bool,
     /// Options for reading the scene.
     #[command(flatten)]
@@ -180,6 +202,15 @@ fn parse_crop(s: &str, w: u32, h: u32) -> Result<Crop, String> {
 
 /// The render settings from the options, or a usage message.
 fn settings(args: &RenderArgs) -> Result<Settings, String> {
+    if let Some(d) = args.aa_depth.filter(|d| !(1..=9).contains(d)) {
+        return Err(format!("--aa-depth {d}: must be 1 to 9"));
+    }
+    if let Some(j) = args.jitter.filter(|j| !(0.0..=1.0).contains(j)) {
+        return Err(format!("--jitter {j}: must be 0 to 1"));
+    }
+    if let Some(g) = args.aa_gamma.filter(|g| !(g.is_finite() && *g > 0.0)) {
+        return Err(format!("--aa-gamma {g}: must be positive"));
+    }
     let sampling = match (args.antialias, args.samples) {
         (Some(_), Some(_)) => {
             return Err("--antialias and --samples cannot be used together: choose one".into())
@@ -190,20 +221,11 @@ fn settings(args: &RenderArgs) -> Result<Settings, String> {
                     "--antialias {t}: the threshold must be 0 or more (POV-Ray's default is 0.3)"
                 ));
             }
-            if !(1..=9).contains(&args.aa_depth) {
-                return Err(format!("--aa-depth {}: must be 1 to 9", args.aa_depth));
-            }
-            if !(0.0..=1.0).contains(&args.jitter) {
-                return Err(format!("--jitter {}: must be 0 to 1", args.jitter));
-            }
-            if !(args.aa_gamma.is_finite() && args.aa_gamma > 0.0) {
-                return Err(format!("--aa-gamma {}: must be positive", args.aa_gamma));
-            }
             Sampling::Adaptive(Antialias {
                 threshold: t,
-                depth: args.aa_depth,
-                jitter: args.jitter,
-                gamma: args.aa_gamma,
+                depth: args.aa_depth.unwrap_or(3),
+                jitter: args.jitter.unwrap_or(1.0),
+                gamma: args.aa_gamma.unwrap_or(2.5),
             })
         }
         (None, Some(n)) => {
@@ -370,8 +392,9 @@ pub fn run(args: &RenderArgs) -> i32 {
     // With a timeline the scene is evaluated again for its frames, whose
     // diagnostics are shown instead (unless this evaluation already failed).
     let quiet_probe = timeline.is_some() && probe.is_some();
+    let mut messages = common::Messages::new(args.scene.message_format, args.quiet);
     if !quiet_probe {
-        common::print(&diags, &parsed.sources, args.scene.message_format);
+        messages.print(&diags, &parsed.sources, None);
     }
     let Some(probe) = probe else {
         return EXIT_ERRORS;
@@ -388,6 +411,7 @@ pub fn run(args: &RenderArgs) -> i32 {
         None => None,
     };
     let mut r = Renderer::new(args, settings, (width, height), pool);
+    r.messages = messages;
     // A plain `-o file.png` (no `#` run) asks for one picture: the first frame of
     // the timeline unless --frame or --clock says which.
     let plain_output = args
@@ -403,12 +427,22 @@ pub fn run(args: &RenderArgs) -> i32 {
         || args.frame.is_some()
         || timeline.is_none()
         || (plain_output && !wants_sequence);
+    let path_traced = super::path_opts::wanted(args, &probe);
+    let sequence = !still && timeline.is_some();
+    for w in super::unused::warnings(
+        args,
+        super::unused::Mode {
+            path_traced,
+            sequence,
+        },
+    ) {
+        eprintln!("warning: {w}");
+    }
     if !still {
         if let Some(tl) = timeline {
             return sequence::run(&mut r, &mut parsed, &base, &plan, tl, t_start);
         }
     }
-    let path_traced = super::path_opts::wanted(args, &probe);
     // A still: at --clock, at --frame's time, or the scene as first evaluated.
     let (instants, first, frame_no) = match (&timeline, args.frame) {
         (Some(tl), Some(n)) => (
@@ -416,11 +450,24 @@ pub fn run(args: &RenderArgs) -> i32 {
             None,
             n,
         ),
-        (Some(tl), None) if args.scene.clock.is_none() => (
-            sequence::instants(&base, tl, tl.initial_frame, plan.blur(tl), args.preview),
-            None,
-            tl.initial_frame,
-        ),
+        (Some(tl), None) if args.scene.clock.is_none() => {
+            if !args.quiet {
+                let stem = args
+                    .output
+                    .as_deref()
+                    .and_then(|p| p.file_stem())
+                    .map_or("frame".into(), |s| s.to_string_lossy().into_owned());
+                eprintln!(
+                    "note: the scene's timeline has frames {}..{}; this renders frame {} only (-o names one picture). For every frame use -o {stem}_####.png (or --gif/--apng/--mp4), for another one --frame N",
+                    tl.initial_frame, tl.final_frame, tl.initial_frame
+                );
+            }
+            (
+                sequence::instants(&base, tl, tl.initial_frame, plan.blur(tl), args.preview),
+                None,
+                tl.initial_frame,
+            )
+        }
         (Some(tl), None) => {
             let mut o = sequence::frame_options(&base, tl, 0);
             o.clock = base.clock;

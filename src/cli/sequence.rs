@@ -29,22 +29,29 @@ pub struct Plan {
     pub preview: bool,
 }
 
-/// `A..B` (or a single `N`).
-fn parse_range(s: &str) -> Result<(i64, i64), String> {
-    let bad = || format!("--frames {s}: expected FIRST..LAST, such as 1..144");
-    let (a, b) = match s.split_once("..") {
-        Some((a, b)) => (a.trim(), b.trim()),
-        None => (s.trim(), s.trim()),
+/// `A..B`: the first and last frame, both included. A lone `N` is refused:
+/// it could mean N frames or frame N.
+pub fn parse_range(s: &str) -> Result<(i64, i64), String> {
+    let Some((a, b)) = s.split_once("..") else {
+        return Err(match s.trim().parse::<i64>() {
+            Ok(n) => format!(
+                "expected FIRST..LAST: 1..{n} for {n} frames, {n}..{n} for frame {n} alone (or --frame {n} for it as a still)"
+            ),
+            Err(_) => "expected FIRST..LAST, such as 1..144".into(),
+        });
     };
-    let a: i64 = a.parse().map_err(|_| bad())?;
-    let b: i64 = b.trim_start_matches('=').parse().map_err(|_| bad())?;
+    let bad = || "expected FIRST..LAST, such as 1..144".to_string();
+    let a: i64 = a.trim().parse().map_err(|_| bad())?;
+    let b: i64 = b
+        .trim()
+        .trim_start_matches('=')
+        .parse()
+        .map_err(|_| bad())?;
     if b < a {
-        return Err(format!(
-            "--frames {s}: the last frame comes before the first"
-        ));
+        return Err("the last frame comes before the first".into());
     }
     if b - a >= rts_max_frames() {
-        return Err(format!("--frames {s}: at most {} frames", rts_max_frames()));
+        return Err(format!("at most {} frames", rts_max_frames()));
     }
     Ok((a, b))
 }
@@ -89,7 +96,7 @@ impl Plan {
             return Err("--clock and --frame cannot be used together: choose one".into());
         }
         Ok(Plan {
-            frames: args.frames.as_deref().map(parse_range).transpose()?,
+            frames: args.frames,
             fps: args.fps,
             cyclic: args.cyclic,
             shard: args.shard.as_deref().map(parse_shard).transpose()?,
@@ -339,6 +346,14 @@ pub fn run(
         return EXIT_USAGE;
     }
     let pattern = pattern_for(&output, last);
+    if pattern != output && !args.quiet {
+        // -o one.png with --gif (or --frames, --shard …): the frames need names.
+        eprintln!(
+            "note: rendering frames {first}..{last} of the scene's timeline to `{}` (-o names one picture; a sequence writes one file per frame)",
+            pattern.display()
+        );
+    }
+    r.sequence = true;
     let format = match args
         .format
         .or_else(|| rts::output::Format::from_path(&pattern))

@@ -2,26 +2,42 @@
 //! tools (`short`), and one JSON object per line (`json`).
 
 use super::excerpt::{visible, Excerpt};
-use super::{Diagnostic, Label, Severity};
+use super::{codes, Diagnostic, Label, Severity};
 use crate::source::SourceMap;
 use crate::span::Span;
 use miette::{GraphicalReportHandler, GraphicalTheme, LabeledSpan};
 use std::fmt;
 
 /// `FILE:LINE:COL: error[CODE]: MESSAGE`, plus ` (help: …)` when there is help.
+/// A `#debug` text's final line ends are left out and inner ones shown as `\n`,
+/// so each diagnostic stays one line.
 pub fn short(diag: &Diagnostic, sources: &SourceMap) -> String {
     let (file, line, col) = position(sources, diag.span.start as usize, diag.span);
+    let message = message_line(diag);
     let mut out = format!(
         "{}:{line}:{col}: {}[{}]: {}",
         visible(&file),
         diag.severity.as_str(),
         diag.code,
-        visible(&diag.message)
+        visible(&message)
     );
     if let Some(help) = &diag.help {
         out.push_str(&format!(" (help: {})", visible(help)));
     }
     out
+}
+
+/// The message on one line: a `#debug` text without its final line ends, inner
+/// ones as `\n`.
+fn message_line(diag: &Diagnostic) -> std::borrow::Cow<'_, str> {
+    if diag.code == codes::USER_DEBUG {
+        let text = diag.message.trim_end_matches('\n');
+        if text.contains('\n') {
+            return text.replace('\n', "\\n").into();
+        }
+        return text.into();
+    }
+    diag.message.as_str().into()
 }
 
 fn position(sources: &SourceMap, offset: usize, span: Span) -> (String, usize, usize) {
@@ -57,7 +73,7 @@ pub fn json(diag: &Diagnostic, sources: &SourceMap) -> serde_json::Value {
     serde_json::json!({
         "severity": diag.severity.as_str(),
         "code": diag.code,
-        "message": diag.message,
+        "message": diag.message.trim_end_matches('\n'),
         "file": file,
         "line": line,
         "column": column,
@@ -71,7 +87,20 @@ pub fn json(diag: &Diagnostic, sources: &SourceMap) -> serde_json::Value {
 
 /// A graphical report (miette) with the source lines, labels, help and notes; the
 /// include and macro chain appears as related reports pointing at each step.
+/// What a scene says itself is printed as POV-Ray prints it: a `#debug` text
+/// as it is (no line end added), a `#warning` as one line with its place.
 pub fn human(diag: &Diagnostic, sources: &SourceMap, color: bool) -> String {
+    if diag.code == codes::USER_DEBUG {
+        return visible(&diag.message).into_owned();
+    }
+    if diag.code == codes::USER_WARNING {
+        let (file, line, col) = position(sources, diag.span.start as usize, diag.span);
+        return format!(
+            "{}:{line}:{col}: warning: {}\n",
+            visible(&file),
+            visible(&diag.message)
+        );
+    }
     let theme = if color {
         GraphicalTheme::unicode()
     } else {

@@ -226,11 +226,19 @@ impl Evaluator<'_> {
             DirectiveKind::Message(kind, e) => {
                 let v = self.expr(e)?;
                 let text = self.to_str(&v, e.span)?;
+                // `#debug` text is printed as it is, as POV-Ray prints it (a line
+                // ends only where the text has "\n"); the others are one message.
+                if *kind == MessageKind::Debug {
+                    self.warn(Diagnostic::note(
+                        codes::USER_DEBUG,
+                        d.span,
+                        text.to_string(),
+                    ));
+                    return Ok(());
+                }
                 let text = text.trim_end_matches('\n').to_string();
                 match kind {
-                    MessageKind::Debug => {
-                        self.warn(Diagnostic::note(codes::USER_DEBUG, d.span, text))
-                    }
+                    MessageKind::Debug => {}
                     MessageKind::Warning => {
                         self.warn(Diagnostic::warning(codes::USER_WARNING, d.span, text))
                     }

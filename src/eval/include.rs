@@ -196,7 +196,7 @@ impl Evaluator<'_> {
         let tracking = crate::syntax::intern::intern("Debug_Inc_Stack_On");
         if let Some(super::value::Value::Float(f)) = self.scope.get(tracking).map(|b| &b.value) {
             if *f != 0.0 {
-                let d = Diagnostic::note(codes::USER_DEBUG, dspan, format!("including {name}"));
+                let d = Diagnostic::note(codes::USER_DEBUG, dspan, format!("including {name}\n"));
                 self.warn(d);
             }
         }

@@ -501,10 +501,21 @@ impl Evaluator<'_> {
 
     fn finish_scene(mut self) -> Evaluated {
         self.note_repeats();
+        // An include file checked on its own (`rts check lib.inc`, the editor)
+        // is a library, not a scene: no camera, light or gamma is expected of
+        // it, and its declarations are for the scenes that include it.
+        let library = self
+            .sources
+            .get(self.include_stack[0])
+            .path
+            .as_deref()
+            .and_then(|p| p.extension())
+            .is_some_and(|e| e.eq_ignore_ascii_case("inc"));
+        let warn = !library;
         if !crate::diag::has_errors(&self.diags) {
             let main = self.include_stack[0];
             let in_macros = self.names_in_macro_bodies();
-            for (name, span) in self.scope.unused_globals() {
+            for (name, span) in self.scope.unused_globals().into_iter().filter(|_| warn) {
                 // A name a macro's text refers to is used whenever the macro
                 // is called, even if this run never called it.
                 if span.file != main
@@ -536,16 +547,19 @@ impl Evaluator<'_> {
                 } else {
                     "add `global_settings { assumed_gamma 1.0 }` (POV-Ray 3.7 assumes 1.0 and warns too)"
                 };
-                self.diags.push(
-                    Diagnostic::warning(
-                        codes::NO_GAMMA,
-                        Span::new(self.include_stack[0], 0, 0),
-                        "the scene does not set assumed_gamma",
-                    )
-                    .with_help(help),
-                );
+                if warn {
+                    self.diags.push(
+                        Diagnostic::warning(
+                            codes::NO_GAMMA,
+                            Span::new(self.include_stack[0], 0, 0),
+                            "the scene does not set assumed_gamma",
+                        )
+                        .with_help(help),
+                    );
+                }
             }
-            if self.scene.lights.is_empty()
+            if warn
+                && self.scene.lights.is_empty()
                 && !self.scene.objects.is_empty()
                 && self.scene.global.path_tracing.is_none()
             {

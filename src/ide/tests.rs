@@ -374,3 +374,18 @@ fn same_diagnostics_as_check_on_the_fixtures() {
     }
     assert!(n > 20, "only {n} fixtures");
 }
+
+#[test]
+fn an_include_file_is_a_library_not_a_scene() {
+    // No camera, light or gamma is expected of it, and its declarations are
+    // for the scenes that include it.
+    let dir = folder(
+        "library",
+        &[(
+            "lib.inc",
+            "#declare Lib_Size = 2;\nsphere { 0, Lib_Size }\n#macro Lib_Ball(P) sphere { P, 1 } #end\n",
+        )],
+    );
+    let a = analyze_file(&dir, "lib.inc");
+    assert!(diagnostics(&a).is_empty(), "{:?}", diagnostics(&a));
+}

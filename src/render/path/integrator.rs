@@ -336,7 +336,13 @@ pub fn radiance(
             beta /= q;
         }
         let (next, eps) = Ray::secondary(p, geo_normal, bs.wi);
-        stats.reflected += 1;
+        // Through the surface (refraction, translucency, pass-through) or back
+        // from it.
+        if bs.wi.dot(geo_normal) * wo.dot(geo_normal) < 0.0 {
+            stats.transmitted += 1;
+        } else {
+            stats.reflected += 1;
+        }
         ray = next;
         t_min = eps;
         depth += 1;
