@@ -596,7 +596,9 @@ mod tests {
     #[test]
     fn ranges_and_shards() {
         assert_eq!(parse_range("1..144"), Ok((1, 144)));
-        assert_eq!(parse_range("5"), Ok((5, 5)));
+        // A lone number could mean N frames or frame N: refused.
+        assert!(parse_range("5").is_err());
+        assert_eq!(parse_range("5..5"), Ok((5, 5)));
         assert!(parse_range("9..2").is_err());
         assert_eq!(parse_shard("2/3"), Ok((2, 3)));
         assert!(parse_shard("0/3").is_err());
