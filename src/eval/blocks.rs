@@ -102,6 +102,7 @@ impl Evaluator<'_> {
             return self.camera_path(b).map(Some);
         }
         let mut toks = Sink::new();
+        toks.packed = super::list::PACKED_LISTS.contains(&kw);
         // `object { … }` among a pigment's, normal's or texture's items is the
         // object pattern: its object is read as usual, its pigments (or
         // normals, textures) are entries, not the object's own.

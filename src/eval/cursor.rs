@@ -24,6 +24,9 @@ pub(crate) enum Tok {
     /// A `pigment`, `finish` or `normal` block written in a texture or an
     /// object, not evaluated yet: it modifies the one in force there.
     Deferred(std::rc::Rc<Deferred>),
+    /// A run of plain numbers and vectors, packed (only in the list blocks
+    /// that read it so: see `list.rs`; elsewhere it is read item by item).
+    Data(std::rc::Rc<crate::syntax::data::DataRun>),
 }
 
 /// A block kept for later evaluation (see [`Tok::Deferred`]), with what it can
@@ -50,6 +53,7 @@ impl Tok {
             | Tok::Semi(s)
             | Tok::Bracket(_, s) => *s,
             Tok::Deferred(b) => b.block.span,
+            Tok::Data(d) => d.span,
         }
     }
 
@@ -63,6 +67,7 @@ impl Tok {
             Tok::Semi(_) => "`;`".into(),
             Tok::Bracket(..) => "`[ … ]`".into(),
             Tok::Deferred(b) => format!("a `{}` block", b.block.keyword.name),
+            Tok::Data(_) => "numbers and vectors".into(),
         }
     }
 }
@@ -74,6 +79,9 @@ pub(crate) struct Sink {
     pub(crate) toks: Vec<Tok>,
     /// Whether items are placed in the scene as soon as they are produced.
     pub(crate) top: bool,
+    /// Whether runs of plain numbers stay packed ([`Tok::Data`]); else each
+    /// number and vector is an item of its own.
+    pub(crate) packed: bool,
 }
 
 impl Sink {
@@ -82,6 +90,7 @@ impl Sink {
         Sink {
             toks: Vec::new(),
             top: false,
+            packed: false,
         }
     }
 
@@ -90,6 +99,7 @@ impl Sink {
         Sink {
             toks: Vec::new(),
             top: true,
+            packed: false,
         }
     }
 

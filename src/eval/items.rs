@@ -82,6 +82,8 @@ impl Evaluator<'_> {
             }
             Item::Comma(s) => out.push(Tok::Comma(*s)),
             Item::Semicolon(s) => out.push(Tok::Semi(*s)),
+            Item::Data(run) if out.packed => out.push(Tok::Data(run.clone())),
+            Item::Data(run) => self.unpack(run, out),
             Item::Expr(e) => {
                 if let ExprKind::Call { name, args, .. } = &e.kind {
                     if let Some(m) = self.lookup_macro(*name) {
@@ -101,6 +103,30 @@ impl Evaluator<'_> {
                 }
             }
         }
+    }
+
+    /// A packed run of numbers and vectors as the items it was written as: each
+    /// number and vector a value with its own span, and the commas between.
+    fn unpack(&mut self, run: &crate::syntax::data::DataRun, out: &mut Sink) {
+        use crate::syntax::data::{scan, Piece};
+        let base = run.span.start as usize;
+        let file = run.span.file;
+        let text = &self.sources.get(file).text;
+        let Some(slice) = text.get(base..run.span.end as usize) else {
+            return;
+        };
+        let at = |a: usize, b: usize| Span::new(file, base + a, base + b);
+        // The lowering read this text already, so it reads again.
+        let _ = scan(slice, |p| match p {
+            Piece::Comma(i) => out.push(Tok::Comma(at(i, i + 1))),
+            Piece::Element { start, end, values } => {
+                let v = match values {
+                    [x] => Value::Float(*x),
+                    v => Value::Vector(super::value::Vector::from_slice(v)),
+                };
+                out.push(Tok::Val(v, at(start, end)));
+            }
+        });
     }
 
     /// Lays the texture block `top` over the texture just declared as `target`.
@@ -187,6 +213,13 @@ impl Evaluator<'_> {
                 return;
             }
             Tok::Block(_, Value::Poison, _) | Tok::Val(Value::Poison, _) | Tok::Semi(_) => return,
+            // Top-level sinks are never packed.
+            Tok::Data(d) => Diagnostic::error(
+                codes::UNEXPECTED_ITEM,
+                d.span,
+                "numbers and vectors cannot stand alone at top level",
+            )
+            .into(),
             Tok::Block(k, v, span) => Diagnostic::error(
                 codes::UNEXPECTED_ITEM,
                 span,

@@ -3,6 +3,7 @@
 //! indices) and shared by every object made from the declared mesh.
 
 use super::cursor::{Cursor, Tok};
+use super::list::{Elem, List};
 use super::shapes::Listed;
 use super::value::Value;
 use super::{Evaluator, R};
@@ -11,6 +12,7 @@ use crate::scene::{MeshData, Object, Shape, Texture};
 use crate::span::Span;
 use glam::{DVec2, DVec3};
 use rustc_hash::FxHashMap;
+use std::rc::Rc;
 use std::sync::Arc;
 
 fn f32x3(v: DVec3) -> [f32; 3] {
@@ -240,7 +242,8 @@ impl Evaluator<'_> {
     }
 
     /// `mesh2 { vertex_vectors … normal_vectors … uv_vectors … texture_list …
-    /// face_indices … normal_indices … uv_indices … [inside_vector V] }`.
+    /// face_indices … normal_indices … uv_indices … [inside_vector V] }`. The
+    /// lists are read straight from their packed numbers (see `list.rs`).
     pub(crate) fn mesh2(&mut self, c: &mut Cursor) -> R<Object> {
         const LISTS: [&str; 7] = [
             "vertex_vectors",
@@ -251,7 +254,7 @@ impl Evaluator<'_> {
             "normal_indices",
             "uv_indices",
         ];
-        let mut lists: [Option<(Vec<Listed>, Span)>; 7] = Default::default();
+        let mut lists: [Option<(Rc<List>, Span)>; 7] = Default::default();
         let mut data = MeshData::default();
         loop {
             let kw = match c.peek() {
@@ -264,9 +267,16 @@ impl Evaluator<'_> {
                 _ => break,
             };
             let k = LISTS.iter().position(|l| *l == kw).unwrap_or(0);
-            let Some(l) = self.take_list(c, kw) else {
-                c.next(); // an erroneous list, already reported
-                continue;
+            let l = match c.next() {
+                Some(Tok::Block(_, Value::List(l), span)) => (l, span),
+                Some(Tok::Block(_, Value::Array(a), span)) => {
+                    let mut l = List::default();
+                    for e in &a.elems {
+                        l.push(e.clone().unwrap_or(Value::Poison));
+                    }
+                    (Rc::new(l), span)
+                }
+                _ => continue, // an erroneous list, already reported
             };
             if lists[k].is_some() {
                 return Err(Diagnostic::error(
@@ -278,7 +288,7 @@ impl Evaluator<'_> {
             }
             lists[k] = Some(l);
         }
-        let need = |k: usize, lists: &[Option<(Vec<Listed>, Span)>; 7]| -> R<()> {
+        let need = |k: usize, lists: &[Option<(Rc<List>, Span)>; 7]| -> R<()> {
             if lists[k].is_none() {
                 return Err(Diagnostic::error(
                     codes::MISSING_VALUE,
@@ -296,10 +306,15 @@ impl Evaluator<'_> {
             let Some((l, s)) = &lists[k] else {
                 return Ok(Vec::new());
             };
-            ev.counted(LISTS[k], l, *s, false)?
-                .iter()
-                .map(|(v, s)| ev.to_vec3(v, *s).map(f32x3))
-                .collect()
+            ev.counted_list(LISTS[k], l, *s)?;
+            let mut out = Vec::with_capacity(l.len().saturating_sub(1));
+            for e in l.iter().skip(1) {
+                out.push(match e {
+                    Elem::Numbers(&[x, y, z]) => [x as f32, y as f32, z as f32],
+                    e => f32x3(ev.to_vec3(&e.value(), *s)?),
+                });
+            }
+            Ok(out)
         };
         data.positions = vec3s(self, 0)?;
         // Normals are unit length before interpolation, as in POV-Ray.
@@ -311,36 +326,41 @@ impl Evaluator<'_> {
             })
             .collect();
         if let Some((l, s)) = &lists[2] {
-            for (v, s) in self.counted(LISTS[2], l, *s, false)? {
-                match v {
-                    Value::Vector(x) if x.len == 2 => data.uvs.push([x.c[0] as f32, x.c[1] as f32]),
-                    other => return Err(self.mismatch("a uv vector <u, v>", other, *s)),
+            self.counted_list(LISTS[2], l, *s)?;
+            for e in l.iter().skip(1) {
+                match e {
+                    Elem::Numbers(&[u, v]) => data.uvs.push([u as f32, v as f32]),
+                    Elem::Value(Value::Vector(x)) if x.len == 2 => {
+                        data.uvs.push([x.c[0] as f32, x.c[1] as f32])
+                    }
+                    e => return Err(self.mismatch("a uv vector <u, v>", &e.value(), *s)),
                 }
             }
         }
         if let Some((l, s)) = &lists[3] {
-            for (v, s) in self.counted(LISTS[3], l, *s, false)? {
-                match v {
-                    Value::Texture(t) => data.textures.push(t.clone()),
-                    other => return Err(self.mismatch("a texture { … }", other, *s)),
+            self.counted_list(LISTS[3], l, *s)?;
+            for e in l.iter().skip(1) {
+                match e {
+                    Elem::Value(Value::Texture(t)) => data.textures.push(t.clone()),
+                    e => return Err(self.mismatch("a texture { … }", &e.value(), *s)),
                 }
             }
         }
         // face_indices: <a, b, c> [, t | , t0, t1, t2].
         let (l, s) = lists[4].as_ref().expect("checked above");
-        let entries = self.counted(LISTS[4], l, *s, false)?;
-        let mut k = 0;
-        while k < entries.len() {
-            let tri = self.indices(&entries[k], data.positions.len(), "vertex_vectors")?;
+        self.counted_list(LISTS[4], l, *s)?;
+        data.triangles.reserve(l.len());
+        let mut entries = l.iter().skip(1).peekable();
+        while let Some(e) = entries.next() {
+            let tri = self.face(e, *s, data.positions.len(), "vertex_vectors")?;
             data.triangles.push(tri);
-            k += 1;
             let mut tex = Vec::new();
-            while let Some((Value::Float(f), s)) = entries.get(k) {
-                if *f < 0.0 || f.fract() != 0.0 || *f as usize >= data.textures.len() {
-                    return Err(out_of_range(*s, *f, data.textures.len(), "texture_list"));
+            while let Some(f) = entries.peek().and_then(Elem::float) {
+                if f < 0.0 || f.fract() != 0.0 || f as usize >= data.textures.len() {
+                    return Err(out_of_range(*s, f, data.textures.len(), "texture_list"));
                 }
-                tex.push(*f as u32);
-                k += 1;
+                tex.push(f as u32);
+                entries.next();
             }
             if !tex.is_empty() {
                 data.texture_indices
@@ -360,15 +380,16 @@ impl Evaluator<'_> {
             }
             let idx = match &lists[k] {
                 Some((l, s)) => {
-                    let e = self.counted(LISTS[k], l, *s, false)?;
-                    if e.len() != data.triangles.len() {
+                    self.counted_list(LISTS[k], l, *s)?;
+                    let n = l.len() - 1;
+                    if n != data.triangles.len() {
                         return Err(Diagnostic::error(
                             codes::INVALID_SIZE,
                             *s,
                             format!(
                                 "`{}` lists {} faces but face_indices lists {}",
                                 LISTS[k],
-                                e.len(),
+                                n,
                                 data.triangles.len()
                             ),
                         )
@@ -379,8 +400,9 @@ impl Evaluator<'_> {
                     } else {
                         "uv_vectors"
                     };
-                    e.iter()
-                        .map(|x| self.indices(x, count, name))
+                    l.iter()
+                        .skip(1)
+                        .map(|e| self.face(e, *s, count, name))
                         .collect::<R<Vec<_>>>()?
                 }
                 None => {
@@ -414,6 +436,23 @@ impl Evaluator<'_> {
             })),
             c.span,
         ))
+    }
+
+    /// A face `<a, b, c>` of indices below `count` into the list `of`.
+    fn face(&self, e: Elem, s: Span, count: usize, of: &str) -> R<[u32; 3]> {
+        match e {
+            Elem::Numbers(v @ &[_, _, _]) => {
+                let mut out = [0u32; 3];
+                for (o, &i) in out.iter_mut().zip(v) {
+                    if i < 0.0 || i.fract() != 0.0 || i as usize >= count {
+                        return Err(out_of_range(s, i, count, of));
+                    }
+                    *o = i as u32;
+                }
+                Ok(out)
+            }
+            e => self.indices(&(e.value(), s), count, of),
+        }
     }
 
     fn indices(&self, (v, s): &Listed, count: usize, of: &str) -> R<[u32; 3]> {

@@ -24,6 +24,7 @@ mod include;
 mod items;
 mod keyframe;
 mod lights;
+mod list;
 mod material_block;
 mod materials;
 mod media;

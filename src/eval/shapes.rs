@@ -19,6 +19,9 @@ impl Evaluator<'_> {
     /// A list block (`vertex_vectors`, `face_indices`, `texture_list`, `clipped_by`, …):
     /// its values and blocks in order, commas dropped, as a one-dimensional array.
     pub(crate) fn list_block(&mut self, c: &mut Cursor) -> R<Value> {
+        if super::list::PACKED_LISTS.contains(&c.block) {
+            return self.packed_list(c);
+        }
         let mut elems = Vec::new();
         while let Some(t) = c.next() {
             match t {
@@ -43,23 +46,45 @@ impl Evaluator<'_> {
         })))
     }
 
+    /// A list block whose numbers and vectors stay packed (`vertex_vectors`,
+    /// `face_indices`, …; see `list.rs`), commas dropped.
+    fn packed_list(&mut self, c: &mut Cursor) -> R<Value> {
+        let mut list = super::list::List::default();
+        while let Some(t) = c.next() {
+            match t {
+                Tok::Comma(_) => {}
+                Tok::Data(run) => list.push_packed(run),
+                Tok::Val(v, _) | Tok::Block(_, v, _) => list.push(v),
+                other => {
+                    self.report(self.unexpected(
+                        c,
+                        &other,
+                        &["a count, then values separated by commas"],
+                    ));
+                }
+            }
+        }
+        Ok(Value::List(Rc::new(list)))
+    }
+
     /// Takes the list block `kw` if it is next: its elements (with the block's span,
     /// as list elements keep no spans of their own) and the block's span.
     pub(crate) fn take_list(&mut self, c: &mut Cursor, kw: &str) -> Option<(Vec<Listed>, Span)> {
         match c.peek() {
-            Some(Tok::Block(k, Value::Array(_), _)) if *k == kw => {}
+            Some(Tok::Block(k, Value::Array(_) | Value::List(_), _)) if *k == kw => {}
             _ => return None,
         }
-        let Some(Tok::Block(_, Value::Array(a), span)) = c.next() else {
-            return None;
-        };
-        Some((
-            a.elems
-                .iter()
-                .map(|e| (e.clone().unwrap_or(Value::Poison), span))
-                .collect(),
-            span,
-        ))
+        match c.next() {
+            Some(Tok::Block(_, Value::Array(a), span)) => Some((
+                a.elems
+                    .iter()
+                    .map(|e| (e.clone().unwrap_or(Value::Poison), span))
+                    .collect(),
+                span,
+            )),
+            Some(Tok::Block(_, Value::List(l), span)) => Some((l.listed(span), span)),
+            _ => None,
+        }
     }
 
     /// Splits POV-Ray's leading count off a list and checks it: `vertex_vectors {
@@ -101,6 +126,37 @@ impl Evaluator<'_> {
             .into());
         }
         Ok(rest)
+    }
+
+    /// [`Self::counted`] for a packed list: checks its leading count against
+    /// its entries (the elements after it that are not numbers); the entries are
+    /// then `list.iter().skip(1)`.
+    pub(crate) fn counted_list(&mut self, kw: &str, list: &super::list::List, span: Span) -> R<()> {
+        let mut it = list.iter();
+        let Some(n) = it.next().and_then(|e| e.float()) else {
+            if list.len() == 0 {
+                return Ok(());
+            }
+            return Err(Diagnostic::error(
+                codes::MISSING_VALUE,
+                span,
+                format!("`{kw}` must start with how many entries follow"),
+            )
+            .with_help(format!("write `{kw} {{ COUNT, … }}`"))
+            .into());
+        };
+        let given = it.filter(|e| e.float().is_none()).count();
+        if n < 0.0 || n.fract() != 0.0 || n as usize != given {
+            return Err(Diagnostic::error(
+                codes::INVALID_SIZE,
+                span,
+                format!("`{kw}` says {n} entries but lists {given}"),
+            )
+            .with_label("count does not match")
+            .with_help(format!("make the count {given}, or list {n} entries"))
+            .into());
+        }
+        Ok(())
     }
 
     /// The shapes of this file; `None` when `c.block` is not one of them.

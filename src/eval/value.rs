@@ -139,6 +139,8 @@ pub enum Value {
     Str(Rc<str>),
     /// An array.
     Array(Rc<Array>),
+    /// The contents of a list block (`vertex_vectors { … }`, …), packed.
+    List(Rc<super::list::List>),
     /// An object.
     Object(Arc<Object>),
     /// A texture.
@@ -224,6 +226,7 @@ impl Value {
             Value::Colour(_) => "a colour",
             Value::Str(_) => "a string",
             Value::Array(_) => "an array",
+            Value::List(_) => "a list",
             Value::Object(_) => "an object",
             Value::Texture(_) => "a texture",
             Value::Pigment(_) => "a pigment",

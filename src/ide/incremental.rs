@@ -150,6 +150,10 @@ impl Shift {
             Item::Comma(s) => Item::Comma(self.span(*s)),
             Item::Semicolon(s) => Item::Semicolon(self.span(*s)),
             Item::Expr(e) => Item::Expr(Box::new(self.expr(e))),
+            Item::Data(d) => Item::Data(std::rc::Rc::new(crate::syntax::data::DataRun {
+                span: self.span(d.span),
+                ..(**d).clone()
+            })),
         }
     }
 

@@ -324,7 +324,7 @@ impl Builder<'_> {
             Item::Block(b) => self.block(b, scope, file),
             Item::Bracket(b) => self.items(&b.items, scope, file),
             Item::Expr(e) => self.expr(e),
-            Item::Keyword(_) | Item::Comma(_) | Item::Semicolon(_) => {}
+            Item::Keyword(_) | Item::Comma(_) | Item::Semicolon(_) | Item::Data(_) => {}
         }
     }
 

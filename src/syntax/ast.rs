@@ -30,6 +30,9 @@ pub enum Item {
     Semicolon(Span),
     /// An expression, e.g. `<0, 1, 0>` or `Ball(1, 2)`.
     Expr(Box<Expr>),
+    /// A run of plain numbers and vectors, packed: `3, <0, 0, 0>, <1, 0, 0>`
+    /// (the items `3`, `,`, `<0, 0, 0>`, … read in one go).
+    Data(std::rc::Rc<super::data::DataRun>),
 }
 
 impl Item {
@@ -42,6 +45,7 @@ impl Item {
             Item::Bracket(b) => b.span,
             Item::Comma(s) | Item::Semicolon(s) => *s,
             Item::Expr(e) => e.span,
+            Item::Data(d) => d.span,
         }
     }
 }

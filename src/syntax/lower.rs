@@ -36,11 +36,38 @@ impl Lowerer {
         for p in pairs.filter(|p| p.as_rule() != Rule::EOI) {
             if p.as_rule() == Rule::sized_fn {
                 self.sized_fn(p, &mut out);
+            } else if p.as_rule() == Rule::data_run {
+                out.extend(self.data(&p).map(Item::Data));
+            } else if p.as_rule() == Rule::data_body {
+                let text = p.into_inner().next().expect("data_text");
+                out.extend(self.data(&text).map(Item::Data));
             } else {
                 out.push(self.item(p));
             }
         }
         out
+    }
+
+    /// A run of plain numbers and vectors (a `data_run`, or the text of a
+    /// `data_body`), packed.
+    fn data(&mut self, p: &P) -> Option<Rc<super::data::DataRun>> {
+        let span = self.span(p);
+        match super::data::read(p.as_str(), span) {
+            Ok(run) => Some(Rc::new(run)),
+            Err(bad) => {
+                let at = span.start as usize;
+                self.diags.push(
+                    Diagnostic::error(
+                        codes::BAD_NUMBER,
+                        Span::new(self.file, at + bad.start, at + bad.end),
+                        "number too large",
+                    )
+                    .with_label("this does not fit in a 64-bit float")
+                    .with_help("use a number below 1.8e308"),
+                );
+                None
+            }
+        }
     }
 
     /// `function W, H { … }` as the items `W`, `,`, `H` and the block.
@@ -678,14 +705,39 @@ impl Lowerer {
 
     fn array_init(&mut self, p: P) -> ArrayInit {
         let span = self.span(&p);
-        let elems = p
-            .into_inner()
-            .map(|x| match x.as_rule() {
-                Rule::array_init => ArrayElem::Nested(self.array_init(x)),
-                Rule::block => ArrayElem::Block(self.block(x)),
-                _ => ArrayElem::Expr(self.expr(x)),
-            })
-            .collect();
+        let mut elems = Vec::new();
+        for x in p.into_inner() {
+            match x.as_rule() {
+                Rule::array_init => elems.push(ArrayElem::Nested(self.array_init(x))),
+                Rule::block => elems.push(ArrayElem::Block(self.block(x))),
+                Rule::data_body => {
+                    let text = x.into_inner().next().expect("data_text");
+                    let base = self.span(&text);
+                    // Each number and vector an element, with its own span.
+                    let _ = super::data::scan(text.as_str(), |piece| {
+                        if let super::data::Piece::Element { start, end, values } = piece {
+                            let at = Span::new(
+                                self.file,
+                                base.start as usize + start,
+                                base.start as usize + end,
+                            );
+                            let number = |v: f64| Expr {
+                                kind: ExprKind::Number(v),
+                                span: at,
+                            };
+                            elems.push(ArrayElem::Expr(match values {
+                                [v] => number(*v),
+                                v => Expr {
+                                    kind: ExprKind::Vector(v.iter().map(|&x| number(x)).collect()),
+                                    span: at,
+                                },
+                            }));
+                        }
+                    });
+                }
+                _ => elems.push(ArrayElem::Expr(self.expr(x))),
+            }
+        }
         ArrayInit { elems, span }
     }
 

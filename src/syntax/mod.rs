@@ -5,6 +5,7 @@
 //! starts at column 0, so several independent syntax errors are reported in one run.
 
 pub mod ast;
+pub mod data;
 pub mod intern;
 pub mod keywords;
 mod lower;
@@ -23,10 +24,24 @@ use pest::Parser;
 /// Parses one file. Returns the items that parsed and the problems found; when the
 /// list holds an error the tree is incomplete and should not be evaluated.
 pub fn parse(text: &str, file: FileId) -> (ast::File, Vec<Diagnostic>) {
-    let diags = prepass::check(text, file);
+    let (diags, data_bodies) = prepass::check_marking(text, file);
     if diags.iter().any(Diagnostic::is_error) {
         return (ast::File::default(), diags);
     }
+    // Block bodies of plain numbers and vectors have their `{` marked in the
+    // parser's copy of the text (same length, so every offset stays), so the
+    // grammar skips them whole; the lowering scans them.
+    let marked;
+    let text = if data_bodies.is_empty() {
+        text
+    } else {
+        let mut bytes = text.as_bytes().to_vec();
+        for at in data_bodies {
+            bytes[at] = prepass::DATA_BODY;
+        }
+        marked = String::from_utf8(bytes).unwrap_or_else(|_| text.to_string());
+        marked.as_str()
+    };
     let mut lower = lower::Lowerer {
         file,
         offset: 0,

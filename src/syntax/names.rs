@@ -100,6 +100,14 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         Rule::call => "a function call",
         Rule::value_block => "a keyframes block",
         Rule::number => "a number",
+        Rule::data_run
+        | Rule::data_elem
+        | Rule::data_next
+        | Rule::data_vector
+        | Rule::data_number
+        | Rule::data_gap
+        | Rule::data_body
+        | Rule::data_text => "a number or a vector",
         Rule::string | Rule::string_inner => "a string",
         Rule::ident_char => return None,
         Rule::keyword | Rule::keyword_word => "a keyword",

@@ -30,10 +30,26 @@ struct Scanner<'a> {
     question_depth: usize,
     /// The last significant byte, to tell a vector's `<` from less-than.
     prev: u8,
+    /// The innermost `{` whose contents so far could be plain data.
+    plain_open: Option<usize>,
+    /// The `{` of every block body that holds only plain numbers and vectors.
+    data_bodies: Vec<usize>,
 }
+
+/// The marker the parser's copy of the text has in place of the `{` of a block
+/// body that holds only plain numbers and vectors (see [`check_marking`]).
+pub const DATA_BODY: u8 = 0x01;
 
 /// Checks `text`; returns the problems found (empty when the file may be parsed).
 pub fn check(text: &str, file: FileId) -> Vec<Diagnostic> {
+    check_marking(text, file).0
+}
+
+/// [`check`], and the offsets of the `{` of every block body that holds nothing
+/// but two or more plain numbers and vectors separated by commas (a mesh's
+/// `vertex_vectors { 3, <0,0,0>, … }`): the parser skips such a body at memory
+/// speed and the lowering reads it in one pass (see `data.rs`).
+pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Vec<usize>) {
     let mut s = Scanner {
         bytes: text.as_bytes(),
         file,
@@ -44,9 +60,24 @@ pub fn check(text: &str, file: FileId) -> Vec<Diagnostic> {
         prefix_run: 0,
         question_depth: 0,
         prev: b'{',
+        plain_open: None,
+        data_bodies: Vec::new(),
     };
     s.run();
-    s.diags
+    (s.diags, s.data_bodies)
+}
+
+/// Whether byte `i` can be part of a body of plain numbers and vectors.
+fn data_byte(b: &[u8], i: usize) -> bool {
+    match b[i] {
+        b'0'..=b'9' | b'.' | b'+' | b'-' | b'<' | b'>' | b',' | b' ' | b'\t' | b'\r' | b'\n' => {
+            true
+        }
+        0x0B | 0x0C | b'}' => true,
+        // An exponent: `1e5`, `2.E-3`.
+        b'e' | b'E' => i > 0 && (b[i - 1].is_ascii_digit() || b[i - 1] == b'.'),
+        _ => false,
+    }
 }
 
 fn closer_for(open: u8) -> u8 {
@@ -83,7 +114,22 @@ impl Scanner<'_> {
         let mut i = 0;
         while i < b.len() {
             let c = b[i];
+            if self.plain_open.is_some() && !data_byte(b, i) {
+                self.plain_open = None;
+            }
             match c {
+                DATA_BODY => {
+                    self.diags.push(
+                        Diagnostic::error(
+                            codes::SYNTAX_EXPECTED,
+                            self.span(i, i + 1),
+                            "a control character (U+0001) in the scene",
+                        )
+                        .with_label("not a character a scene may hold")
+                        .with_help("remove it; the file may not be a text file"),
+                    );
+                    return;
+                }
                 b'/' if b.get(i + 1) == Some(&b'/') => {
                     while i < b.len() && b[i] != b'\n' {
                         i += 1;
@@ -104,6 +150,7 @@ impl Scanner<'_> {
                     continue;
                 }
                 b'{' | b'(' | b'[' => {
+                    self.plain_open = (c == b'{').then_some(i);
                     self.brackets.push((c, i));
                     if self.brackets.len() > MAX_NESTING {
                         self.too_deep(i, 1, "brackets");
@@ -275,7 +322,16 @@ impl Scanner<'_> {
 
     fn close(&mut self, c: u8, i: usize) -> bool {
         match self.brackets.pop() {
-            Some((open, _)) if closer_for(open) == c => true,
+            Some((open, at)) if closer_for(open) == c => {
+                if open == b'{' && self.plain_open == Some(at) {
+                    let body = std::str::from_utf8(&self.bytes[at + 1..i]).unwrap_or("");
+                    if super::data::is_plain_body(body) {
+                        self.data_bodies.push(at);
+                    }
+                }
+                self.plain_open = None;
+                true
+            }
             Some((open, at)) => {
                 self.diags.push(
                     Diagnostic::error(

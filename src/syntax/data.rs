@@ -1,0 +1,425 @@
+//! Literal data at memory speed: a run of plain numbers and vectors
+//! (`3, <0, 0, 0>, <1, 0, 0>, <0, 1, 0>`, the grammar's `data_run`) is scanned
+//! here into packed `f64`s, one pass over its text, instead of one expression
+//! (and one syntax-tree node) per number. Element spans are not kept: the
+//! scanner runs again over the run's text when they are needed.
+
+use crate::span::Span;
+
+/// How many numbers each element of a run has (1: a number; 2 to 5: a vector).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Dims {
+    /// Every element has `n` numbers.
+    Uniform(u8),
+    /// Element `k` has `dims[k]` numbers.
+    Mixed(Vec<u8>),
+}
+
+/// `0, <1, 2, 3>, <4, 5, 6>`: a run of plain numbers and vectors, packed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DataRun {
+    /// Where the run was written.
+    pub span: Span,
+    /// Every element's numbers, in order.
+    pub values: Vec<f64>,
+    /// How the numbers divide into elements.
+    pub dims: Dims,
+    /// How many elements.
+    pub len: usize,
+}
+
+impl DataRun {
+    /// The numbers of each element, in order.
+    pub fn elements(&self) -> Elements<'_> {
+        Elements {
+            run: self,
+            k: 0,
+            at: 0,
+        }
+    }
+}
+
+/// The elements of a [`DataRun`]: each a slice of 1 (a number) to 5 numbers.
+pub struct Elements<'a> {
+    run: &'a DataRun,
+    k: usize,
+    at: usize,
+}
+
+impl<'a> Iterator for Elements<'a> {
+    type Item = &'a [f64];
+
+    fn next(&mut self) -> Option<&'a [f64]> {
+        if self.k >= self.run.len {
+            return None;
+        }
+        let n = match &self.run.dims {
+            Dims::Uniform(n) => *n as usize,
+            Dims::Mixed(d) => d[self.k] as usize,
+        };
+        let out = &self.run.values[self.at..self.at + n];
+        self.k += 1;
+        self.at += n;
+        Some(out)
+    }
+
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        let left = self.run.len - self.k;
+        (left, Some(left))
+    }
+}
+
+impl ExactSizeIterator for Elements<'_> {}
+
+/// What the scanner meets in a run's text, with byte offsets into that text.
+#[derive(Debug, PartialEq)]
+pub enum Piece<'a> {
+    /// An element from `start` to `end`: its numbers.
+    Element {
+        /// Where it starts.
+        start: usize,
+        /// Where it ends.
+        end: usize,
+        /// Its numbers (1 for a number, 2 to 5 for a vector).
+        values: &'a [f64],
+    },
+    /// A `,` between elements, at this offset.
+    Comma(usize),
+}
+
+/// Why a run's text could not be read (a number too large for `f64`).
+#[derive(Debug, PartialEq)]
+pub struct BadNumber {
+    /// Where the number starts in the run's text.
+    pub start: usize,
+    /// Where it ends.
+    pub end: usize,
+}
+
+/// Scans the text of a `data_run` (the grammar guarantees its shape), calling
+/// `f` for every element and comma in order.
+pub fn scan(text: &str, mut f: impl FnMut(Piece<'_>)) -> Result<(), BadNumber> {
+    let b = text.as_bytes();
+    let mut i = 0;
+    let mut comps = [0.0f64; 5];
+    loop {
+        i = skip_gap(b, i);
+        if i >= b.len() {
+            return Ok(());
+        }
+        if b[i] == b',' {
+            f(Piece::Comma(i));
+            i += 1;
+            continue;
+        }
+        let start = i;
+        if b[i] == b'<' {
+            i += 1;
+            let mut n = 0;
+            loop {
+                i = skip_gap(b, i);
+                match b.get(i) {
+                    Some(b'>') => {
+                        i += 1;
+                        break;
+                    }
+                    Some(b',') => i += 1,
+                    _ => {
+                        let (v, next) = number(text, i)?;
+                        if n < comps.len() {
+                            comps[n] = v;
+                        }
+                        n += 1;
+                        i = next;
+                    }
+                }
+            }
+            f(Piece::Element {
+                start,
+                end: i,
+                values: &comps[..n.min(comps.len())],
+            });
+        } else {
+            let (v, next) = number(text, i)?;
+            i = next;
+            comps[0] = v;
+            f(Piece::Element {
+                start,
+                end: i,
+                values: &comps[..1],
+            });
+        }
+    }
+}
+
+/// Reads `text` (the text of a `data_run` at `span`) into a packed run.
+pub fn read(text: &str, span: Span) -> Result<DataRun, BadNumber> {
+    let mut values = Vec::with_capacity(text.len() / 6);
+    let mut dims: Vec<u8> = Vec::new();
+    let mut uniform: Option<u8> = None;
+    let mut mixed = false;
+    let mut len = 0;
+    scan(text, |p| {
+        if let Piece::Element { values: v, .. } = p {
+            values.extend_from_slice(v);
+            let n = v.len() as u8;
+            match uniform {
+                None if !mixed => uniform = Some(n),
+                Some(u) if u != n => {
+                    // The first element of another size: from now on one count each.
+                    dims = vec![u; len];
+                    mixed = true;
+                    uniform = None;
+                }
+                _ => {}
+            }
+            if mixed {
+                dims.push(n);
+            }
+            len += 1;
+        }
+    })?;
+    values.shrink_to_fit();
+    Ok(DataRun {
+        span,
+        values,
+        dims: match uniform {
+            Some(n) if !mixed => Dims::Uniform(n),
+            _ => Dims::Mixed(dims),
+        },
+        len,
+    })
+}
+
+/// Whether `text` (the inside of a `{ … }`, comments excluded by the caller)
+/// is nothing but two or more plain elements separated by commas, as the
+/// grammar's `data_run` reads them: numbers with an optional sign, and vectors
+/// of 2 to 5 such numbers with commas between (a trailing comma allowed, in a
+/// vector and after the last element). Such a body is read as one packed run.
+pub fn is_plain_body(text: &str) -> bool {
+    let b = text.as_bytes();
+    let mut i = skip_space(b, 0);
+    let mut elements = 0;
+    loop {
+        if i >= b.len() {
+            return elements >= 2;
+        }
+        i = match plain_element(b, i) {
+            Some(next) => next,
+            None => return false,
+        };
+        elements += 1;
+        i = skip_space(b, i);
+        match b.get(i) {
+            None => return elements >= 2,
+            Some(b',') => i = skip_space(b, i + 1),
+            Some(_) => return false,
+        }
+    }
+}
+
+/// Spaces only (a body with comments is not marked).
+fn skip_space(b: &[u8], mut i: usize) -> usize {
+    while i < b.len() && matches!(b[i], b' ' | b'\t' | b'\r' | b'\n' | 0x0B | 0x0C) {
+        i += 1;
+    }
+    i
+}
+
+/// A plain number or vector at `i`: where it ends.
+fn plain_element(b: &[u8], i: usize) -> Option<usize> {
+    if b[i] != b'<' {
+        return plain_number(b, i);
+    }
+    let mut i = skip_space(b, i + 1);
+    let mut n = 0;
+    loop {
+        i = plain_number(b, i)?;
+        n += 1;
+        i = skip_space(b, i);
+        match b.get(i)? {
+            b',' => {
+                i = skip_space(b, i + 1);
+                if b.get(i) == Some(&b'>') {
+                    return (2..=5).contains(&n).then_some(i + 1);
+                }
+            }
+            b'>' => return (2..=5).contains(&n).then_some(i + 1),
+            _ => return None,
+        }
+    }
+}
+
+/// A number as the grammar's `number` reads it, with an optional sign (and
+/// spaces after the sign): where it ends.
+fn plain_number(b: &[u8], mut i: usize) -> Option<usize> {
+    if matches!(b.get(i), Some(b'-' | b'+')) {
+        i = skip_space(b, i + 1);
+    }
+    let start = i;
+    while i < b.len() && b[i].is_ascii_digit() {
+        i += 1;
+    }
+    let whole = i > start;
+    if b.get(i) == Some(&b'.') {
+        i += 1;
+        let frac = i;
+        while i < b.len() && b[i].is_ascii_digit() {
+            i += 1;
+        }
+        if !whole && i == frac {
+            return None;
+        }
+    } else if !whole {
+        return None;
+    }
+    if matches!(b.get(i), Some(b'e' | b'E')) {
+        let mut j = i + 1;
+        if matches!(b.get(j), Some(b'+' | b'-')) {
+            j += 1;
+        }
+        if b.get(j).is_some_and(u8::is_ascii_digit) {
+            while j < b.len() && b[j].is_ascii_digit() {
+                j += 1;
+            }
+            i = j;
+        } else {
+            // `2e` is the number 2 and a name: not plain.
+            return None;
+        }
+    }
+    Some(i)
+}
+
+/// Skips spaces and comments (`// …` to the line's end, nested `/* … */`).
+fn skip_gap(b: &[u8], mut i: usize) -> usize {
+    loop {
+        match b.get(i) {
+            Some(b' ' | b'\t' | b'\r' | b'\n' | 0x0B | 0x0C) => i += 1,
+            Some(0xEF) if b.get(i + 1..i + 3) == Some(&[0xBB, 0xBF]) => i += 3,
+            Some(b'/') if b.get(i + 1) == Some(&b'/') => {
+                while i < b.len() && b[i] != b'\n' {
+                    i += 1;
+                }
+            }
+            Some(b'/') if b.get(i + 1) == Some(&b'*') => {
+                let mut depth = 0;
+                while i < b.len() {
+                    if b[i..].starts_with(b"/*") {
+                        depth += 1;
+                        i += 2;
+                    } else if b[i..].starts_with(b"*/") {
+                        depth -= 1;
+                        i += 2;
+                        if depth == 0 {
+                            break;
+                        }
+                    } else {
+                        i += 1;
+                    }
+                }
+            }
+            _ => return i,
+        }
+    }
+}
+
+/// A signed number at `i` (a sign, spaces, then the digits the grammar's
+/// `number` takes): its value and where it ends.
+fn number(text: &str, mut i: usize) -> Result<(f64, usize), BadNumber> {
+    let b = text.as_bytes();
+    let start = i;
+    let mut negative = false;
+    if let Some(&s @ (b'-' | b'+')) = b.get(i) {
+        negative = s == b'-';
+        i = skip_gap(b, i + 1);
+    }
+    let digits = i;
+    while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.') {
+        i += 1;
+    }
+    if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
+        let mut j = i + 1;
+        if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
+            j += 1;
+        }
+        if j < b.len() && b[j].is_ascii_digit() {
+            while j < b.len() && b[j].is_ascii_digit() {
+                j += 1;
+            }
+            i = j;
+        }
+    }
+    match text[digits..i].parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok((if negative { -v } else { v }, i)),
+        _ => Err(BadNumber { start, end: i }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn run(text: &str) -> DataRun {
+        read(text, Span::default()).expect("readable")
+    }
+
+    #[test]
+    fn numbers_and_vectors_are_packed() {
+        let r = run("3, <0, 0, 0>, <1.5, -2, 3e-1>,\n  <+1,2,3,> // note\n");
+        assert_eq!(r.len, 4);
+        assert_eq!(
+            r.dims,
+            Dims::Mixed(vec![1, 3, 3, 3]),
+            "a count, then vectors"
+        );
+        let e: Vec<&[f64]> = r.elements().collect();
+        assert_eq!(e[0], &[3.0]);
+        assert_eq!(e[2], &[1.5, -2.0, 0.3]);
+        assert_eq!(e[3], &[1.0, 2.0, 3.0]);
+        let u = run("<1, 2>, <3, 4> /* a /* nested */ comment */, <5, 6>");
+        assert_eq!((u.len, u.dims), (3, Dims::Uniform(2)));
+        assert_eq!(u.values, [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+        let n = run("- 1, .5, 2., 1E2");
+        assert_eq!(n.values, [-1.0, 0.5, 2.0, 100.0]);
+    }
+
+    #[test]
+    fn the_scanner_gives_element_and_comma_offsets() {
+        let mut seen = Vec::new();
+        scan("1, <2, 3>", |p| {
+            seen.push(match p {
+                Piece::Element { start, end, .. } => (start, end),
+                Piece::Comma(at) => (at, at + 1),
+            })
+        })
+        .unwrap();
+        assert_eq!(seen, [(0, 1), (1, 2), (3, 9)]);
+    }
+
+    #[test]
+    fn plain_bodies_are_told_from_expressions() {
+        assert!(is_plain_body(" 3, <0, 0, 0>, <1,-2.5,3e-2,>, <4, 5, 6>, "));
+        assert!(is_plain_body("1,2"));
+        assert!(is_plain_body("- 1, .5, 2., 1E+2"));
+        assert!(!is_plain_body("1"), "one element");
+        assert!(!is_plain_body("1 - 2, 3"), "a subtraction");
+        assert!(!is_plain_body("1, 2 3"), "no comma");
+        assert!(!is_plain_body("<1 2 3>, 4"), "a vector without commas");
+        assert!(!is_plain_body("<1, 2> <3, 4>, 5"));
+        assert!(!is_plain_body("<1>, 2"), "one component");
+        assert!(!is_plain_body("<1,2,3,4,5,6>, 2"), "six components");
+        assert!(!is_plain_body("1, 2e"));
+        assert!(!is_plain_body("1, 2 < 3"));
+        assert!(!is_plain_body("1, , 2"));
+        assert!(!is_plain_body("."));
+    }
+
+    #[test]
+    fn a_number_too_large_is_refused_with_its_place() {
+        assert_eq!(
+            read("1, 2e999", Span::default()),
+            Err(BadNumber { start: 3, end: 8 })
+        );
+    }
+}
