@@ -118,7 +118,12 @@ fn run_file_block(page: &str, dir: &Path, b: &Block) {
     let first = b.text.lines().next().unwrap_or("");
     let name = first
         .strip_prefix("// file: ")
-        .unwrap_or_else(|| panic!("{page}:{}: an rts block starts with `// file: NAME`", b.line))
+        .unwrap_or_else(|| {
+            panic!(
+                "{page}:{}: an rts block starts with `// file: NAME`",
+                b.line
+            )
+        })
         .trim();
     std::fs::write(dir.join(name), &b.text).unwrap();
     if !name.ends_with(".rts") {
@@ -147,7 +152,11 @@ fn run_file_block(page: &str, dir: &Path, b: &Block) {
         let (ok, _, err) = rts(dir, &args);
         assert!(ok, "{page}:{}: rendering {name}: {err}", b.line);
         let bytes = std::fs::read(dir.join(&gif)).unwrap();
-        assert!(bytes.starts_with(b"GIF89a"), "{page}:{}: {gif} is not a GIF", b.line);
+        assert!(
+            bytes.starts_with(b"GIF89a"),
+            "{page}:{}: {gif} is not a GIF",
+            b.line
+        );
     } else {
         let png = format!("{stem}.png");
         let mut args = vec!["render", name, "-o", &png];
@@ -155,7 +164,11 @@ fn run_file_block(page: &str, dir: &Path, b: &Block) {
         let (ok, _, err) = rts(dir, &args);
         assert!(ok, "{page}:{}: rendering {name}: {err}", b.line);
         let bytes = std::fs::read(dir.join(&png)).unwrap();
-        assert!(bytes.starts_with(b"\x89PNG"), "{page}:{}: {png} is not a PNG", b.line);
+        assert!(
+            bytes.starts_with(b"\x89PNG"),
+            "{page}:{}: {png} is not a PNG",
+            b.line
+        );
     }
 }
 
@@ -167,8 +180,7 @@ fn shell_line(line: &str, dir: &Path) -> Option<String> {
         Some(rest) => format!("rts {rest}"),
         None => line.to_string(),
     };
-    if !line.starts_with("rts ") || line.starts_with("rts lsp") || line.starts_with("rts watch")
-    {
+    if !line.starts_with("rts ") || line.starts_with("rts lsp") || line.starts_with("rts watch") {
         return None;
     }
     // Drop a trailing `# comment` (a `#` after a blank; `f_##.png` keeps its `#`s).
@@ -282,7 +294,10 @@ fn tutorial_snippets_check_and_render() {
     // The tutorial's scenes and include file, and its rts commands: a page that lost its
     // blocks (a broken fence, a renamed tag) must fail here, not pass on nothing.
     assert!(files >= 8, "only {files} rts blocks in docs/tutorial.md");
-    assert!(commands >= 8, "only {commands} rts commands in docs/tutorial.md");
+    assert!(
+        commands >= 8,
+        "only {commands} rts commands in docs/tutorial.md"
+    );
 }
 
 #[test]
@@ -332,7 +347,10 @@ fn readme_starts_with_the_two_commands_ci_runs() {
 #[test]
 fn language_reference_has_contents_and_no_measurement_notes() {
     let md = read("docs/language.md");
-    assert!(md.contains("## Contents"), "docs/language.md has no table of contents");
+    assert!(
+        md.contains("## Contents"),
+        "docs/language.md has no table of contents"
+    );
     for (i, line) in md.lines().enumerate() {
         assert!(
             !line.to_lowercase().contains("measured"),
@@ -351,7 +369,10 @@ fn language_reference_has_contents_and_no_measurement_notes() {
     let mut n = 0;
     for link in contents.split("](#").skip(1) {
         let target = &link[..link.find(')').unwrap()];
-        assert!(anchors.iter().any(|a| a == target), "no heading for #{target}");
+        assert!(
+            anchors.iter().any(|a| a == target),
+            "no heading for #{target}"
+        );
         n += 1;
     }
     assert!(n >= 10, "the table of contents has only {n} links");
