@@ -39,6 +39,15 @@ pub enum Integrator {
     Path,
 }
 
+/// `--aov` names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum AovName {
+    /// The pigment colour at the first hit.
+    Albedo,
+    /// The surface normal at the first hit.
+    Normal,
+}
+
 /// `--pixel-filter` names.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum FilterName {
@@ -123,9 +132,10 @@ pub struct PathArgs {
         help_heading = "Path tracer (--integrator path)",
         long,
         value_name = "LIST",
+        value_enum,
         value_delimiter = ','
     )]
-    pub aov: Vec<String>,
+    pub aov: Vec<AovName>,
     /// Path tracer: denoise with Intel Open Image Denoise (needs the `oidn` cargo
     /// feature and the library; uses the albedo and normal AOVs).
     #[arg(help_heading = "Path tracer (--integrator path)", long)]
@@ -211,10 +221,9 @@ fn plan(p: &PathArgs, scene_pt: Option<&PathTracing>, output: &Path) -> Result<P
     let streamed = super::outputs::is_stream(output);
     let (mut aov_albedo, mut aov_normal) = (false, false);
     for a in &p.aov {
-        match a.trim() {
-            "albedo" => aov_albedo = true,
-            "normal" => aov_normal = true,
-            other => return Err(format!("--aov {other}: expected albedo or normal")),
+        match a {
+            AovName::Albedo => aov_albedo = true,
+            AovName::Normal => aov_normal = true,
         }
     }
     if (aov_albedo || aov_normal) && streamed {
