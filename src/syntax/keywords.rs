@@ -366,20 +366,80 @@ pub fn canonical(word: &str) -> &'static str {
     }
 }
 
+/// The grammar's `keyword_word` rule, generated from [`KEYWORDS`] as a trie
+/// (`grammar/keywords.pest`): the word's letters pick the branch, so a word is
+/// matched with a handful of comparisons instead of one per keyword, and every
+/// branch ends in `!ident_char` (a keyword is a whole word).
+pub fn keyword_grammar() -> String {
+    #[derive(Default)]
+    struct Node {
+        end: bool,
+        children: std::collections::BTreeMap<u8, Node>,
+    }
+    fn insert(n: &mut Node, w: &[u8]) {
+        match w.split_first() {
+            None => n.end = true,
+            Some((c, rest)) => insert(n.children.entry(*c).or_default(), rest),
+        }
+    }
+    // One alternative per child, each a run of letters as long as the trie
+    // does not branch; the word ending here comes last.
+    fn alternatives(n: &Node, out: &mut String) {
+        let mut alts = Vec::new();
+        for (c, child) in &n.children {
+            let mut label = vec![*c];
+            let mut node = child;
+            while !node.end && node.children.len() == 1 {
+                let (c, next) = node.children.iter().next().expect("one child");
+                label.push(*c);
+                node = next;
+            }
+            let mut alt = format!("\"{}\"", String::from_utf8_lossy(&label));
+            if node.children.is_empty() {
+                alt.push_str(" ~ !ident_char");
+            } else {
+                let mut inner = String::new();
+                alternatives(node, &mut inner);
+                alt.push_str(&format!(" ~ ({inner})"));
+            }
+            alts.push(alt);
+        }
+        if n.end {
+            alts.push("!ident_char".into());
+        }
+        out.push_str(&alts.join(" | "));
+    }
+    let mut root = Node::default();
+    for w in KEYWORDS {
+        insert(&mut root, w.as_bytes());
+    }
+    let mut body = String::new();
+    alternatives(&root, &mut body);
+    format!(
+        "// Generated from `src/syntax/keywords.rs` (`KEYWORDS`) by `keyword_grammar()`:\n\
+         // do not edit. After changing the table, run\n\
+         // `RTS_BLESS=1 cargo test --lib keyword_grammar` to write it again.\n\n\
+         /// The reserved keywords (those that are not values or functions), as a trie.\n\
+         keyword_word = @{{ {body} }}\n"
+    )
+}
+
 #[cfg(test)]
 mod tests {
-    use super::KEYWORDS;
+    use super::{keyword_grammar, KEYWORDS};
 
     #[test]
-    fn table_matches_grammar() {
-        let grammar = include_str!("../../grammar/rts.pest");
-        let start = grammar.find("keyword_word = @{").expect("rule");
-        let rule = &grammar[start..];
-        let rule = &rule[..rule.find("~ !ident_char").expect("end")];
-        let mut words: Vec<&str> = rule.split('"').skip(1).step_by(2).collect();
-        words.sort_unstable();
-        words.dedup();
-        assert_eq!(words, KEYWORDS);
-        assert!(KEYWORDS.windows(2).all(|w| w[0] < w[1]));
+    fn keyword_grammar_is_generated_from_the_table() {
+        assert!(KEYWORDS.windows(2).all(|w| w[0] < w[1]), "sorted, no repeats");
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/grammar/keywords.pest");
+        let want = keyword_grammar();
+        if std::env::var_os("RTS_BLESS").is_some() {
+            std::fs::write(path, &want).expect("write grammar/keywords.pest");
+        }
+        let have = std::fs::read_to_string(path).unwrap_or_default();
+        assert!(
+            have == want,
+            "grammar/keywords.pest is not what KEYWORDS gives: run `RTS_BLESS=1 cargo test --lib keyword_grammar`"
+        );
     }
 }

@@ -5,4 +5,5 @@
 /// The generated parser; [`Rule`] has one variant per grammar rule.
 #[derive(pest_derive::Parser)]
 #[grammar = "../grammar/rts.pest"]
+#[grammar = "../grammar/keywords.pest"]
 pub struct RtsParser;
