@@ -420,7 +420,7 @@ pub fn keyword_grammar() -> String {
          // do not edit. After changing the table, run\n\
          // `RTS_BLESS=1 cargo test --lib keyword_grammar` to write it again.\n\n\
          /// The reserved keywords (those that are not values or functions), as a trie.\n\
-         keyword_word = @{{ {body} }}\n"
+         keyword_word = @{{ &ASCII_ALPHA_LOWER ~ ({body}) }}\n"
     )
 }
 
@@ -430,7 +430,10 @@ mod tests {
 
     #[test]
     fn keyword_grammar_is_generated_from_the_table() {
-        assert!(KEYWORDS.windows(2).all(|w| w[0] < w[1]), "sorted, no repeats");
+        assert!(
+            KEYWORDS.windows(2).all(|w| w[0] < w[1]),
+            "sorted, no repeats"
+        );
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/grammar/keywords.pest");
         let want = keyword_grammar();
         if std::env::var_os("RTS_BLESS").is_some() {

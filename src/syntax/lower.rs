@@ -470,58 +470,7 @@ impl Lowerer {
                     first
                 }
             }
-            Rule::or_expr | Rule::and_expr | Rule::cmp_expr | Rule::sum | Rule::product => {
-                self.binary(p)
-            }
-            Rule::unary => {
-                let mut ops = Vec::new();
-                let mut operand = None;
-                for x in p.into_inner() {
-                    match x.as_rule() {
-                        Rule::prefix_op => ops.push((x.as_str(), self.span(&x))),
-                        _ => operand = Some(self.expr(x)),
-                    }
-                }
-                let mut e = operand.expect("unary operand");
-                for (op, s) in ops.into_iter().rev() {
-                    let op = match op {
-                        "-" => UnOp::Neg,
-                        "+" => UnOp::Plus,
-                        _ => UnOp::Not,
-                    };
-                    let span = s.join(e.span);
-                    e = Expr {
-                        kind: ExprKind::Unary(op, Box::new(e)),
-                        span,
-                    };
-                }
-                e
-            }
-            Rule::postfix => {
-                let mut inner = p.into_inner();
-                let mut e = self.expr(inner.next().expect("primary"));
-                for x in inner {
-                    let xs = self.span(&x);
-                    let span = e.span.join(xs);
-                    e = match x.as_rule() {
-                        Rule::dot => {
-                            let name = x.into_inner().next().expect("component");
-                            Expr {
-                                kind: ExprKind::Dot(Box::new(e), intern(name.as_str()), xs),
-                                span,
-                            }
-                        }
-                        _ => {
-                            let i = self.expr(x.into_inner().next().expect("index"));
-                            Expr {
-                                kind: ExprKind::Index(Box::new(e), Box::new(i)),
-                                span,
-                            }
-                        }
-                    };
-                }
-                e
-            }
+            Rule::chain | Rule::sum => self.chain(p),
             Rule::number => {
                 let v = match p.as_str().parse::<f64>() {
                     Ok(v) if v.is_finite() => v,
@@ -614,48 +563,114 @@ impl Lowerer {
         }
     }
 
-    fn binary(&mut self, p: P) -> Expr {
+    /// Operands joined by binary operators, read with their precedence (`|`
+    /// loosest, then `&`, comparisons, `+ -`, `* /`; all left-associative), each
+    /// operand with its prefix operators and its `.x` / `[I]` postfixes (which
+    /// bind tighter: `-V.x` is `-(V.x)`). Iterative, so a long chain cannot
+    /// exhaust the stack.
+    fn chain(&mut self, p: P) -> Expr {
         let span = self.span(&p);
-        let mut inner = p.into_inner();
-        let mut e = self.expr(inner.next().expect("operand"));
-        let mut count = 0;
-        while let Some(op) = inner.next() {
-            count += 1;
-            let rhs = self.expr(inner.next().expect("right operand"));
-            if count == MAX_CHAIN {
-                self.diags.push(
-                    Diagnostic::error(
-                        codes::NESTING_TOO_DEEP,
+        let mut operands: Vec<Expr> = Vec::new();
+        let mut ops: Vec<BinOp> = Vec::new();
+        let mut prefixes: Vec<(UnOp, Span)> = Vec::new();
+        let mut current: Option<Expr> = None;
+        for x in p.into_inner() {
+            let xs = self.span(&x);
+            match x.as_rule() {
+                Rule::prefix_op => prefixes.push((
+                    match x.as_str() {
+                        "-" => UnOp::Neg,
+                        "+" => UnOp::Plus,
+                        _ => UnOp::Not,
+                    },
+                    xs,
+                )),
+                Rule::dot => {
+                    let e = current.take().expect("an operand before `.`");
+                    let name = x.into_inner().next().expect("component");
+                    let span = e.span.join(xs);
+                    current = Some(Expr {
+                        kind: ExprKind::Dot(Box::new(e), intern(name.as_str()), xs),
                         span,
-                        format!("expression with more than {MAX_CHAIN} operators"),
-                    )
-                    .with_help("split it into several #declared parts"),
-                );
+                    });
+                }
+                Rule::index => {
+                    let e = current.take().expect("an operand before `[`");
+                    let i = self.expr(x.into_inner().next().expect("index"));
+                    let span = e.span.join(xs);
+                    current = Some(Expr {
+                        kind: ExprKind::Index(Box::new(e), Box::new(i)),
+                        span,
+                    });
+                }
+                Rule::or_op | Rule::and_op | Rule::cmp_op | Rule::add_op | Rule::mul_op => {
+                    operands.push(apply_prefixes(
+                        current.take().expect("an operand before an operator"),
+                        &mut prefixes,
+                    ));
+                    ops.push(match x.as_str() {
+                        "|" => BinOp::Or,
+                        "&" => BinOp::And,
+                        "<" => BinOp::Lt,
+                        "<=" => BinOp::Le,
+                        "=" => BinOp::Eq,
+                        "!=" => BinOp::Ne,
+                        ">=" => BinOp::Ge,
+                        ">" => BinOp::Gt,
+                        "+" => BinOp::Add,
+                        "-" => BinOp::Sub,
+                        "*" => BinOp::Mul,
+                        _ => BinOp::Div,
+                    });
+                }
+                _ => current = Some(self.expr(x)),
             }
-            if count >= MAX_CHAIN {
-                continue;
-            }
-            let op = match op.as_str() {
-                "|" => BinOp::Or,
-                "&" => BinOp::And,
-                "<" => BinOp::Lt,
-                "<=" => BinOp::Le,
-                "=" => BinOp::Eq,
-                "!=" => BinOp::Ne,
-                ">=" => BinOp::Ge,
-                ">" => BinOp::Gt,
-                "+" => BinOp::Add,
-                "-" => BinOp::Sub,
-                "*" => BinOp::Mul,
-                _ => BinOp::Div,
-            };
-            let span = e.span.join(rhs.span);
-            e = Expr {
-                kind: ExprKind::Binary(op, Box::new(e), Box::new(rhs)),
-                span,
-            };
         }
-        e
+        operands.push(apply_prefixes(
+            current.expect("a last operand"),
+            &mut prefixes,
+        ));
+        if ops.len() >= MAX_CHAIN {
+            self.diags.push(
+                Diagnostic::error(
+                    codes::NESTING_TOO_DEEP,
+                    span,
+                    format!("expression with more than {MAX_CHAIN} operators"),
+                )
+                .with_help("split it into several #declared parts"),
+            );
+            return operands.swap_remove(0);
+        }
+        // Shunting-yard: operands and operators of lower precedence wait on stacks.
+        let mut values: Vec<Expr> = Vec::with_capacity(operands.len());
+        let mut pending: Vec<BinOp> = Vec::new();
+        let reduce = |values: &mut Vec<Expr>, op: BinOp| {
+            let rhs = values.pop().expect("right operand");
+            let lhs = values.pop().expect("left operand");
+            let span = lhs.span.join(rhs.span);
+            values.push(Expr {
+                kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)),
+                span,
+            });
+        };
+        let mut operands = operands.into_iter();
+        values.push(operands.next().expect("an operand"));
+        for (op, rhs) in ops.into_iter().zip(operands) {
+            while let Some(&top) = pending.last() {
+                if precedence(top) >= precedence(op) {
+                    pending.pop();
+                    reduce(&mut values, top);
+                } else {
+                    break;
+                }
+            }
+            pending.push(op);
+            values.push(rhs);
+        }
+        while let Some(op) = pending.pop() {
+            reduce(&mut values, op);
+        }
+        values.pop().expect("the whole expression")
     }
 
     fn colour(&mut self, p: P) -> Expr {
@@ -795,4 +810,27 @@ impl Lowerer {
             .with_help(r#"valid escapes are \n \t \r \b \f \a \v \\ \" \' and \uXXXX"#),
         );
     }
+}
+
+/// How tightly a binary operator binds (higher: tighter).
+fn precedence(op: BinOp) -> u8 {
+    match op {
+        BinOp::Or => 1,
+        BinOp::And => 2,
+        BinOp::Lt | BinOp::Le | BinOp::Eq | BinOp::Ne | BinOp::Ge | BinOp::Gt => 3,
+        BinOp::Add | BinOp::Sub => 4,
+        BinOp::Mul | BinOp::Div => 5,
+    }
+}
+
+/// `e` under the prefix operators written before it, innermost last.
+fn apply_prefixes(mut e: Expr, prefixes: &mut Vec<(UnOp, Span)>) -> Expr {
+    while let Some((op, s)) = prefixes.pop() {
+        let span = s.join(e.span);
+        e = Expr {
+            kind: ExprKind::Unary(op, Box::new(e)),
+            span,
+        };
+    }
+    e
 }

@@ -181,7 +181,19 @@ fn syntax_error(text: &str, file: FileId, at: usize, e: &pest::error::Error<Rule
     }
     // The tokens that start an expression say nothing more than "an expression".
     if expected.contains(&"an expression") {
-        const STARTS: &[&str] = &["`(`", "`-`, `+` or `!`", "a string", "a vector `<…>`"];
+        const STARTS: &[&str] = &[
+            "`(`",
+            "`-`, `+` or `!`",
+            "a string",
+            "a vector `<…>`",
+            "a colour",
+            "a keyframes block",
+            "a name",
+            "a number",
+            "a number or a vector",
+            "an array",
+            "a function call",
+        ];
         expected.retain(|n| !STARTS.contains(n));
     }
     expected.sort_unstable();

@@ -71,13 +71,9 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         Rule::kw_default => "a directive",
         Rule::kw_version => "`version`",
         Rule::expr
-        | Rule::or_expr
-        | Rule::and_expr
-        | Rule::cmp_expr
+        | Rule::chain
         | Rule::sum
-        | Rule::product
-        | Rule::unary
-        | Rule::postfix
+        | Rule::operand
         | Rule::primary
         | Rule::paren
         | Rule::arg
@@ -86,7 +82,13 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         | Rule::array_elem => "an expression",
         Rule::question => "`?`",
         Rule::colon => "`:`",
-        Rule::or_op | Rule::and_op | Rule::cmp_op | Rule::add_op | Rule::mul_op => "an operator",
+        Rule::or_op
+        | Rule::and_op
+        | Rule::cmp_op
+        | Rule::add_op
+        | Rule::mul_op
+        | Rule::infix
+        | Rule::arith => "an operator",
         Rule::prefix_op => "`-`, `+` or `!`",
         Rule::dot => "`.`",
         Rule::index => "`[`",
