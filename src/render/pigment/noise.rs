@@ -27,6 +27,9 @@ const PERM: [u8; 256] = {
     p
 };
 
+/// Only the low 8 bits of each coordinate count, so callers add to them with
+/// `wrapping_add` (a point far out, or `f64::MAX` cast to `i64::MAX`, must not
+/// overflow).
 #[inline]
 fn hash(i: i64, j: i64, k: i64) -> usize {
     let a = PERM[(i & 255) as usize] as usize;
@@ -70,7 +73,7 @@ pub fn signed_noise(p: DVec3) -> f64 {
     let (i, j, k) = (f.x as i64, f.y as i64, f.z as i64);
     let d = p - f;
     let g = |di: i64, dj: i64, dk: i64| {
-        let h = GRAD[hash(i + di, j + dj, k + dk) & 15];
+        let h = GRAD[hash(i.wrapping_add(di), j.wrapping_add(dj), k.wrapping_add(dk)) & 15];
         h[0] * (d.x - di as f64) + h[1] * (d.y - dj as f64) + h[2] * (d.z - dk as f64)
     };
     let (u, v, w) = (fade(d.x), fade(d.y), fade(d.z));
@@ -101,7 +104,7 @@ pub fn signed_noise_grad(p: DVec3) -> (f64, DVec3) {
     let mut grad = DVec3::ZERO;
     for corner in 0..8 {
         let (ci, cj, ck) = (corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
-        let h = GRAD[hash(i + ci, j + cj, k + ck) & 15];
+        let h = GRAD[hash(i.wrapping_add(ci), j.wrapping_add(cj), k.wrapping_add(ck)) & 15];
         let g = h[0] * (d.x - ci as f64) + h[1] * (d.y - cj as f64) + h[2] * (d.z - ck as f64);
         // Trilinear weights and their slopes along each axis.
         let (wx, sx) = if ci == 1 { (u, du) } else { (1.0 - u, -du) };

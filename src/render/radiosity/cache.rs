@@ -117,15 +117,24 @@ impl Cache {
     /// Adds a value.
     pub fn push(&mut self, s: Sample) {
         let reach = (s.r * self.reach).max(1e-12);
-        let level = (reach.log2().ceil() as i32).clamp(-60, 60);
+        // Up to 2^1023, the largest finite power of two, so a cell is never
+        // smaller than the reach (a cap of 2^60 once filed a value of reach
+        // 1e30, seen from a camera that far out, in 1e12³ cells).
+        let level = (reach.log2().ceil() as i32).clamp(-60, 1023);
         let size = 2f64.powi(level);
         let lo = ((s.p - DVec3::splat(reach)) / size).floor();
         let hi = ((s.p + DVec3::splat(reach)) / size).floor();
+        // The sphere of reach spans at most 3 cells along an axis; more only
+        // where `p ± reach` overflowed to infinity near f64's end.
+        let span = |lo: f64, hi: f64| {
+            let lo = lo as i64;
+            lo..=(hi as i64).clamp(lo, lo.saturating_add(2))
+        };
         let index = self.samples.len() as u32;
         self.samples.push(s);
-        for x in lo.x as i64..=hi.x as i64 {
-            for y in lo.y as i64..=hi.y as i64 {
-                for z in lo.z as i64..=hi.z as i64 {
+        for x in span(lo.x, hi.x) {
+            for y in span(lo.y, hi.y) {
+                for z in span(lo.z, hi.z) {
                     self.cells
                         .entry((s.depth, level, [x, y, z]))
                         .or_default()
