@@ -69,7 +69,8 @@ pub struct Parsed {
     pub sources: SourceMap,
     /// The scene file's id.
     pub id: rts::span::FileId,
-    /// The syntax tree, when the file parsed without errors.
+    /// The syntax tree: complete when there are no syntax errors, else the items
+    /// that parsed (`None` when nothing could be).
     pub file: Option<rts::syntax::ast::File>,
     /// Syntax diagnostics.
     pub diagnostics: Vec<Diagnostic>,
@@ -112,7 +113,10 @@ pub fn parse(path: &Path, max_size: u64) -> Result<Parsed, String> {
     };
     let text = sources.get(id).text.clone();
     let (file, diagnostics) = rts::syntax::parse(&text, id);
-    let file = (!rts::diag::has_errors(&diagnostics)).then_some(file);
+    // After syntax errors the items that parsed are still evaluated (for their
+    // own errors), unless nothing could be parsed (the prepass stopped it).
+    let evaluable = !rts::diag::has_errors(&diagnostics) || !file.unparsed.is_empty();
+    let file = evaluable.then_some(file);
     Ok(Parsed {
         sources,
         id,

@@ -15,6 +15,8 @@ pub const UNCLOSED_COMMENT: &str = "rts::syntax::unclosed_comment";
 pub const UNCLOSED_DIRECTIVE: &str = "rts::syntax::unclosed_directive";
 /// An `#end`, `#else`, `#elseif`, `#case`, `#range` or `#break` with nothing to close.
 pub const STRAY_DIRECTIVE: &str = "rts::syntax::stray_directive";
+/// A word that is not a keyword before `{` (a misspelled block keyword).
+pub const UNKNOWN_BLOCK: &str = "rts::syntax::unknown_block";
 /// A `#word` that is not a directive.
 pub const UNKNOWN_DIRECTIVE: &str = "rts::syntax::unknown_directive";
 /// The file is not valid UTF-8.

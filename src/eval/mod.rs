@@ -285,8 +285,19 @@ pub fn eval_cached(
         pattern_items: false,
         light_groups: 0,
         spent: budget::Spent::start(),
+        partial: false,
     };
     ev.define_command_line();
+    // Names the text skipped after syntax errors would have declared: known
+    // but broken, so using them reports nothing more.
+    for name in &file.unparsed_names {
+        let sym = crate::syntax::intern(name);
+        if !sym.is_builtin() {
+            ev.scope
+                .declare(sym, Value::Poison, Span::new(file_id, 0, 0));
+        }
+    }
+    ev.partial = !file.unparsed.is_empty();
     ev.run_top(&file.items);
     ev.close_all_files(Span::new(file_id, 0, 0));
     cache.parsed_includes = std::mem::take(&mut ev.parsed_includes);
@@ -401,6 +412,9 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) light_groups: u32,
     /// What the evaluation has spent of its budgets (see `budget.rs`).
     pub(crate) spent: budget::Spent,
+    /// Parts of the file were skipped after syntax errors: warnings about the
+    /// scene as a whole (no light, unused names) would only mislead.
+    pub(crate) partial: bool,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps
@@ -512,7 +526,7 @@ impl Evaluator<'_> {
             .as_deref()
             .and_then(|p| p.extension())
             .is_some_and(|e| e.eq_ignore_ascii_case("inc"));
-        let warn = !library;
+        let warn = !library && !self.partial;
         if !crate::diag::has_errors(&self.diags) {
             let main = self.include_stack[0];
             let in_macros = self.names_in_macro_bodies();

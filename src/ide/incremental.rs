@@ -107,7 +107,13 @@ pub fn parse(text: &str, file: FileId) -> (File, Vec<Diagnostic>) {
         true
     });
     if ok {
-        (File { items }, Vec::new())
+        (
+            File {
+                items,
+                ..File::default()
+            },
+            Vec::new(),
+        )
     } else {
         crate::syntax::parse(text, file)
     }

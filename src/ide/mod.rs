@@ -97,7 +97,8 @@ pub fn analyze(
     );
     let (file, mut raw) = incremental::parse(text, main);
     let mut globals = Vec::new();
-    if !crate::diag::has_errors(&raw) {
+    // After syntax errors the items that parsed are evaluated too.
+    if !crate::diag::has_errors(&raw) || !file.unparsed.is_empty() {
         let evaluated = eval::eval(&file, main, &mut sources, options);
         raw.extend(evaluated.diagnostics);
         globals = evaluated.globals;

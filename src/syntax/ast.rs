@@ -11,6 +11,12 @@ pub type Sym = super::intern::Sym;
 pub struct File {
     /// The items in order.
     pub items: Vec<Item>,
+    /// Text skipped after syntax errors (the items around it parsed).
+    pub unparsed: Vec<Span>,
+    /// Names `#declare`d, `#local`ed or `#macro`-defined in the skipped text:
+    /// evaluation treats them as known but broken, so the items that parsed
+    /// do not report them as unknown.
+    pub unparsed_names: Vec<String>,
 }
 
 /// Anything that may stand at top level or inside a block.

@@ -12,6 +12,7 @@ mod lower;
 mod names;
 mod parser;
 pub mod prepass;
+mod recovery;
 
 pub use intern::{intern, Sym};
 pub use lower::MAX_CHAIN;
@@ -31,6 +32,7 @@ pub fn parse(text: &str, file: FileId) -> (ast::File, Vec<Diagnostic>) {
     // Block bodies of plain numbers and vectors have their `{` marked in the
     // parser's copy of the text (same length, so every offset stays), so the
     // grammar skips them whole; the lowering scans them.
+    let original = text;
     let marked;
     let text = if data_bodies.is_empty() {
         text
@@ -52,17 +54,34 @@ pub fn parse(text: &str, file: FileId) -> (ast::File, Vec<Diagnostic>) {
         Ok(mut pairs) => {
             let file_pair = pairs.next().expect("file rule");
             let items = lower.items(file_pair.into_inner());
-            (ast::File { items }, lower.diags)
+            (
+                ast::File {
+                    items,
+                    ..Default::default()
+                },
+                lower.diags,
+            )
         }
-        Err(_) => recover(text, file, lower),
+        Err(_) => recover(text, original, file, lower),
     }
 }
 
-/// Item-by-item parsing after a failure of the whole-file parse.
-fn recover(text: &str, file: FileId, mut lower: lower::Lowerer) -> (ast::File, Vec<Diagnostic>) {
+/// Item-by-item parsing after a failure of the whole-file parse. `text` is the
+/// parser's copy (data bodies marked), `original` the file as written (for
+/// messages; the offsets agree). What was skipped is kept in the file's
+/// [`ast::File::unparsed`], with the names declared there, so evaluation can
+/// go on with the rest without reporting what the skipped text would have
+/// defined.
+fn recover(
+    text: &str,
+    original: &str,
+    file: FileId,
+    mut lower: lower::Lowerer,
+) -> (ast::File, Vec<Diagnostic>) {
     pest::set_error_detail(true);
     let mut items = Vec::new();
     let mut diags = Vec::new();
+    let mut unparsed = Vec::new();
     let mut pos = 0;
     while pos < text.len() {
         let rest = &text[pos..];
@@ -83,14 +102,46 @@ fn recover(text: &str, file: FileId, mut lower: lower::Lowerer) -> (ast::File, V
             }
             Err(e) => {
                 let at = pos + error_offset(&e);
-                diags.push(syntax_error(text, file, at, &e));
-                pos = resync(text, at.max(pos + 1));
+                let first = syntax_error(original, file, at, &e);
+                let next = resync(text, at.max(pos + 1));
+                // Other misspelled block keywords in the skipped text: each
+                // would stop the parse there too.
+                let first_span = first.span;
+                // `sphear {`: the word parsed as a name just before; it is the
+                // block's misspelled keyword, not a value of its own.
+                if first.code == codes::UNKNOWN_BLOCK {
+                    while items
+                        .last()
+                        .is_some_and(|i: &ast::Item| i.span().start == first_span.start)
+                    {
+                        items.pop();
+                    }
+                }
+                diags.push(first);
+                diags.extend(
+                    recovery::unknown_blocks(original, pos, next, file)
+                        .into_iter()
+                        .filter(|d| d.span != first_span),
+                );
+                unparsed.push(Span::new(file, pos, next));
+                pos = next;
             }
         }
     }
     pest::set_error_detail(false);
     diags.extend(lower.diags);
-    (ast::File { items }, diags)
+    let names = unparsed
+        .iter()
+        .flat_map(|s| recovery::declared_names(&original[s.start as usize..s.end as usize]))
+        .collect();
+    (
+        ast::File {
+            items,
+            unparsed,
+            unparsed_names: names,
+        },
+        diags,
+    )
 }
 
 fn error_offset(e: &pest::error::Error<Rule>) -> usize {
@@ -198,6 +249,9 @@ fn syntax_error(text: &str, file: FileId, at: usize, e: &pest::error::Error<Rule
     }
     expected.sort_unstable();
     expected.dedup();
+    if let Some(d) = recovery::unknown_block_before(text, at, file) {
+        return d;
+    }
     let (found, len) = token_at(text, at);
     let list = match expected.as_slice() {
         [] => "something else".to_string(),

@@ -34,6 +34,10 @@ struct Scanner<'a> {
     plain_open: Option<usize>,
     /// The `{` of every block body that holds only plain numbers and vectors.
     data_bodies: Vec<usize>,
+    /// The first `}` that starts its line indented less than the line of the
+    /// `{` it closes (`{` offset, `}` offset): where a block whose own `}` is
+    /// missing most likely ends, when one stays open at the end.
+    misindented: Option<(usize, usize)>,
 }
 
 /// The marker the parser's copy of the text has in place of the `{` of a block
@@ -62,9 +66,25 @@ pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Vec<usize>) 
         prev: b'{',
         plain_open: None,
         data_bodies: Vec::new(),
+        misindented: None,
     };
     s.run();
     (s.diags, s.data_bodies)
+}
+
+/// The line of `text` holding byte `i`: its indentation (leading spaces and
+/// tabs) and whether `i` is the first other character on it.
+fn indentation(b: &[u8], i: usize) -> (&[u8], bool) {
+    let start = b[..i]
+        .iter()
+        .rposition(|&c| c == b'\n')
+        .map_or(0, |p| p + 1);
+    let end = start
+        + b[start..]
+            .iter()
+            .position(|&c| c != b' ' && c != b'\t')
+            .unwrap_or(b.len() - start);
+    (&b[start..end], end == i)
 }
 
 /// Whether byte `i` can be part of a body of plain numbers and vectors.
@@ -323,6 +343,13 @@ impl Scanner<'_> {
     fn close(&mut self, c: u8, i: usize) -> bool {
         match self.brackets.pop() {
             Some((open, at)) if closer_for(open) == c => {
+                if open == b'{' && self.misindented.is_none() {
+                    let (opener, _) = indentation(self.bytes, at);
+                    let (closer, first) = indentation(self.bytes, i);
+                    if first && closer.len() < opener.len() && opener.starts_with(closer) {
+                        self.misindented = Some((at, i));
+                    }
+                }
                 if open == b'{' && self.plain_open == Some(at) {
                     let body = std::str::from_utf8(&self.bytes[at + 1..i]).unwrap_or("");
                     if super::data::is_plain_body(body) {
@@ -476,6 +503,36 @@ impl Scanner<'_> {
             );
         }
         if let Some(&(open, at)) = self.brackets.last() {
+            // A `{` left open at the end: when a `}` earlier was indented like an
+            // outer block, the block it closed is most likely the one missing its
+            // own `}` (its contents were read as the outer block's).
+            if let (b'{', Some((culprit, closer))) = (open, self.misindented) {
+                let line = |i: usize| self.bytes[..i].iter().filter(|&&c| c == b'\n').count() + 1;
+                self.diags.push(
+                    Diagnostic::error(
+                        codes::UNCLOSED_DELIMITER,
+                        self.span(culprit, culprit + 1),
+                        "unclosed block: this `{` is most likely never closed",
+                    )
+                    .with_label("opened here")
+                    .with_secondary(
+                        self.span(closer, closer + 1),
+                        format!(
+                            "indented like an outer block, so probably not this block's `}}` (line {})",
+                            line(closer)
+                        ),
+                    )
+                    .with_secondary(
+                        self.span(at, at + 1),
+                        "so this `{` is still open at the end of the file",
+                    )
+                    .with_help(format!(
+                        "add `}}` where the block opened on line {} should end",
+                        line(culprit)
+                    )),
+                );
+                return;
+            }
             let what = match open {
                 b'{' => "block",
                 b'(' => "parenthesis",
