@@ -98,6 +98,20 @@ impl Diagnostic {
         }
     }
 
+    /// Moves every span of the diagnostic `by` bytes later in its file (for text
+    /// parsed out of a larger file).
+    pub fn shift(&mut self, by: usize) {
+        let by = by as u32;
+        let move_span = |s: &mut Span| {
+            s.start += by;
+            s.end += by;
+        };
+        move_span(&mut self.span);
+        for l in self.labels.iter_mut().chain(self.trace.iter_mut()) {
+            move_span(&mut l.span);
+        }
+    }
+
     /// Sets the text under the primary span.
     pub fn with_label(mut self, label: impl Into<String>) -> Diagnostic {
         self.label = Some(label.into());

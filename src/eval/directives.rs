@@ -56,7 +56,9 @@ impl Evaluator<'_> {
                 self.bind(*local, target, v, d.span)
             }
             DirectiveKind::Undef { name, span } => {
-                if !self.scope.undef(*name) {
+                let pending = self.pending.has(*name);
+                self.before_bind(*name);
+                if !self.scope.undef(*name) && !pending {
                     self.warn(
                         Diagnostic::warning(
                             codes::UNKNOWN_IDENTIFIER,
@@ -214,6 +216,7 @@ impl Evaluator<'_> {
                         return Err(self.reserved(p.span, &p.name.name()));
                     }
                 }
+                self.before_bind(m.name);
                 self.scope
                     .declare(m.name, Value::Macro(m.clone()), m.name_span);
                 Ok(())
@@ -458,6 +461,7 @@ impl Evaluator<'_> {
             return Err(self.reserved(target.name_span, &target.name.name()));
         }
         if target.indices.is_empty() {
+            self.before_bind(target.name);
             if local {
                 self.scope.local(target.name, v, span);
             } else {
@@ -465,6 +469,7 @@ impl Evaluator<'_> {
             }
             return Ok(());
         }
+        self.force(target.name);
         let mut idx = Vec::new();
         for e in &target.indices {
             let iv = self.expr(e)?;
@@ -520,6 +525,12 @@ impl Evaluator<'_> {
     fn is_defined(&mut self, target: &LValue) -> R<bool> {
         if target.name.is_builtin() {
             return Ok(true);
+        }
+        if self.pending.has(target.name) {
+            if target.indices.is_empty() {
+                return Ok(true);
+            }
+            self.force(target.name);
         }
         let Some(b) = self.scope.get(target.name) else {
             return Ok(false);

@@ -276,6 +276,7 @@ impl Evaluator<'_> {
             }
             return Ok(self.builtin_constant(i));
         }
+        self.force(name);
         match self.scope.get(name) {
             Some(b) => match &b.value {
                 Value::Poison => Err(Fail::silent()),
@@ -311,8 +312,13 @@ impl Evaluator<'_> {
             .with_label("not implemented yet")
             .with_help("see docs/language.md for what this release supports");
         }
-        let names: Vec<std::sync::Arc<str>> =
-            self.scope.names().into_iter().map(Sym::name).collect();
+        let names: Vec<std::sync::Arc<str>> = self
+            .scope
+            .names()
+            .into_iter()
+            .chain(self.pending.names())
+            .map(Sym::name)
+            .collect();
         // Keywords are lowercase: suggest them only for lowercase words.
         let keywords: &[&str] = if text.chars().any(char::is_uppercase) {
             &[]

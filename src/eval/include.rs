@@ -216,6 +216,11 @@ impl Evaluator<'_> {
             span: dspan,
             message: format!("in `{}` included from here", self.sources.get(id).name),
         });
+        if self.include_lazily(id, out) {
+            self.language_version = Some(self.language_version.unwrap_or(3.7));
+            self.trace.pop();
+            return Ok(());
+        }
         // A file included many times (say in a loop) is parsed once; its syntax
         // errors are reported the first time.
         let parsed = match self.parsed_includes.get(&id) {

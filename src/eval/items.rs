@@ -143,7 +143,8 @@ impl Evaluator<'_> {
         self.bind(local, target, Value::Texture(layered), top.span)
     }
 
-    fn lookup_macro(&self, name: Sym) -> Option<Rc<MacroDef>> {
+    fn lookup_macro(&mut self, name: Sym) -> Option<Rc<MacroDef>> {
+        self.force(name);
         match self.scope.get(name).map(|b| &b.value) {
             Some(Value::Macro(m)) => Some(m.clone()),
             _ => None,
@@ -500,7 +501,7 @@ impl Evaluator<'_> {
         match args {
             [Arg::Expr(e)] => match &e.kind {
                 ExprKind::Ident(n) => Ok(Value::Float(f64::from(u8::from(
-                    n.is_builtin() || self.scope.get(*n).is_some(),
+                    n.is_builtin() || self.scope.get(*n).is_some() || self.pending.has(*n),
                 )))),
                 _ => Err(
                     Diagnostic::error(codes::TYPE_MISMATCH, e.span, "`defined` needs a name")

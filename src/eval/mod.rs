@@ -23,6 +23,7 @@ mod import;
 mod include;
 mod items;
 mod keyframe;
+mod lazy;
 mod lights;
 mod list;
 mod material_block;
@@ -132,6 +133,10 @@ pub struct EvalOptions {
     pub max_errors: usize,
     /// How an editor stops an evaluation early.
     pub interrupt: Interrupt,
+    /// Whether the built-in library's declarations and macros are evaluated
+    /// when first used instead of at the `#include` (same values; see
+    /// `lazy.rs`).
+    pub lazy_library: bool,
     /// Most bytes the files `#write` makes may hold, all together (`--max-write`).
     pub max_write: u64,
     /// Largest `#include`d file, and file `#fopen` reads, in bytes
@@ -167,6 +172,7 @@ impl Default for EvalOptions {
             max_string_length: 64 << 20,
             max_errors: 100,
             interrupt: Interrupt::default(),
+            lazy_library: true,
             max_write: 256 << 20,
             max_source_size: MAX_SOURCE_SIZE,
         }
@@ -286,6 +292,7 @@ pub fn eval_cached(
         light_groups: 0,
         spent: budget::Spent::start(),
         partial: false,
+        pending: Default::default(),
     };
     ev.define_command_line();
     // Names the text skipped after syntax errors would have declared: known
@@ -415,6 +422,8 @@ pub(crate) struct Evaluator<'a> {
     /// Parts of the file were skipped after syntax errors: warnings about the
     /// scene as a whole (no light, unused names) would only mislead.
     pub(crate) partial: bool,
+    /// Built-in library items not evaluated yet (see `lazy.rs`).
+    pub(crate) pending: lazy::Pending,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps

@@ -47,6 +47,11 @@ impl Scopes {
         Some(b)
     }
 
+    /// Looks `name` up without marking it used.
+    pub(crate) fn get_quiet(&self, name: Sym) -> Option<&Binding> {
+        self.frames.iter().rev().find_map(|f| f.get(&name))
+    }
+
     /// Global bindings never read, in declaration order of their spans.
     pub(crate) fn unused_globals(&self) -> Vec<(Sym, Span)> {
         let mut v: Vec<(Sym, Span)> = self.frames[0]
@@ -169,6 +174,24 @@ impl Scopes {
         if self.frames.len() > 1 {
             self.frames.pop();
         }
+    }
+
+    /// How many scopes are open (1: only the global one).
+    pub(crate) fn depth(&self) -> usize {
+        self.frames.len()
+    }
+
+    /// Takes the local scopes away, leaving the global one alone visible;
+    /// [`Scopes::restore_locals`] puts them back.
+    pub(crate) fn hide_locals(&mut self) -> Vec<Frame> {
+        self.frames.split_off(1)
+    }
+
+    /// Puts back the local scopes [`Scopes::hide_locals`] took (any opened
+    /// since are closed).
+    pub(crate) fn restore_locals(&mut self, locals: Vec<Frame>) {
+        self.frames.truncate(1);
+        self.frames.extend(locals);
     }
 
     /// Every name visible now, for "did you mean".

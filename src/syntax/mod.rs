@@ -25,7 +25,16 @@ use pest::Parser;
 /// Parses one file. Returns the items that parsed and the problems found; when the
 /// list holds an error the tree is incomplete and should not be evaluated.
 pub fn parse(text: &str, file: FileId) -> (ast::File, Vec<Diagnostic>) {
-    let (diags, data_bodies) = prepass::check_marking(text, file);
+    parse_at(text, file, 0)
+}
+
+/// [`parse`] for `text` found at byte `base` of file `file` (a part of a larger
+/// file): every span of the tree and the diagnostics is the file's.
+pub fn parse_at(text: &str, file: FileId, base: usize) -> (ast::File, Vec<Diagnostic>) {
+    let (mut diags, data_bodies) = prepass::check_marking(text, file);
+    for d in &mut diags {
+        d.shift(base);
+    }
     if diags.iter().any(Diagnostic::is_error) {
         return (ast::File::default(), diags);
     }
@@ -46,7 +55,7 @@ pub fn parse(text: &str, file: FileId) -> (ast::File, Vec<Diagnostic>) {
     };
     let mut lower = lower::Lowerer {
         file,
-        offset: 0,
+        offset: base,
         // The prepass's warnings come first.
         diags,
     };
@@ -62,7 +71,7 @@ pub fn parse(text: &str, file: FileId) -> (ast::File, Vec<Diagnostic>) {
                 lower.diags,
             )
         }
-        Err(_) => recover(text, original, file, lower),
+        Err(_) => recover(text, original, file, lower, base),
     }
 }
 
@@ -77,6 +86,7 @@ fn recover(
     original: &str,
     file: FileId,
     mut lower: lower::Lowerer,
+    base: usize,
 ) -> (ast::File, Vec<Diagnostic>) {
     pest::set_error_detail(true);
     let mut items = Vec::new();
@@ -92,7 +102,7 @@ fn recover(
             Ok(mut pairs) => {
                 let pair = pairs.next().expect("one_item");
                 let end = pair.as_span().end();
-                lower.offset = pos;
+                lower.offset = base + pos;
                 items.extend(lower.items(pair.into_inner()));
                 pos += end.max(1);
                 // Skip to the next char boundary in the unlikely case of zero progress.
@@ -102,7 +112,8 @@ fn recover(
             }
             Err(e) => {
                 let at = pos + error_offset(&e);
-                let first = syntax_error(original, file, at, &e);
+                let mut first = syntax_error(original, file, at, &e);
+                first.shift(base);
                 let next = resync(text, at.max(pos + 1));
                 // Other misspelled block keywords in the skipped text: each
                 // would stop the parse there too.
@@ -121,9 +132,13 @@ fn recover(
                 diags.extend(
                     recovery::unknown_blocks(original, pos, next, file)
                         .into_iter()
+                        .map(|mut d| {
+                            d.shift(base);
+                            d
+                        })
                         .filter(|d| d.span != first_span),
                 );
-                unparsed.push(Span::new(file, pos, next));
+                unparsed.push(Span::new(file, base + pos, base + next));
                 pos = next;
             }
         }
@@ -132,7 +147,9 @@ fn recover(
     diags.extend(lower.diags);
     let names = unparsed
         .iter()
-        .flat_map(|s| recovery::declared_names(&original[s.start as usize..s.end as usize]))
+        .flat_map(|s| {
+            recovery::declared_names(&original[s.start as usize - base..s.end as usize - base])
+        })
         .collect();
     (
         ast::File {

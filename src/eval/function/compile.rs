@@ -579,6 +579,7 @@ impl Evaluator<'_> {
             out.push(op);
             return Ok(());
         }
+        self.force(name);
         let value = self.scope.get(name).map(|b| b.value.clone());
         match value {
             Some(Value::Function(f)) => {
