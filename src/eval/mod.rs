@@ -5,50 +5,94 @@
 //! failing statement is reported and evaluation goes on with the next one, and values
 //! whose evaluation failed are [`Value::Poison`] so they do not cause further reports.
 
+#[path = "settings/atmosphere.rs"]
 mod atmosphere;
+#[path = "objects/blob.rs"]
 mod blob;
+#[path = "core/blocks.rs"]
 mod blocks;
+#[path = "core/budget.rs"]
 mod budget;
+#[path = "core/builtins.rs"]
 mod builtins;
+#[path = "settings/camera.rs"]
 mod camera;
+#[path = "animation/camera_path.rs"]
 mod camera_path;
+#[path = "core/cursor.rs"]
 mod cursor;
+#[path = "core/directives.rs"]
 mod directives;
+#[path = "core/exprs.rs"]
 mod exprs;
+#[path = "core/file_data.rs"]
 mod file_data;
+#[path = "core/file_io.rs"]
 pub mod file_io;
 pub mod function;
+#[path = "core/images.rs"]
 mod images;
+#[path = "objects/import.rs"]
 mod import;
+#[path = "core/include.rs"]
 mod include;
+#[path = "core/items.rs"]
 mod items;
+#[path = "animation/keyframe.rs"]
 mod keyframe;
+#[path = "settings/lights.rs"]
 mod lights;
+#[path = "core/list.rs"]
 mod list;
+#[path = "materials/material_block.rs"]
 mod material_block;
+#[path = "materials/texture.rs"]
 mod materials;
+#[path = "settings/media.rs"]
 mod media;
+#[path = "objects/mesh.rs"]
 mod mesh;
+#[path = "objects/mesh_cache.rs"]
 mod mesh_cache;
+#[path = "settings/mesh_camera.rs"]
 mod mesh_camera;
+#[path = "materials/modify.rs"]
 mod modify;
+#[path = "objects/object.rs"]
 mod objects;
+#[path = "settings/path_tracing.rs"]
 mod path_tracing;
+#[path = "materials/pattern_blocks.rs"]
 mod pattern_blocks;
+#[path = "materials/patterns.rs"]
 mod patterns;
+#[path = "settings/photons.rs"]
 mod photons;
+#[path = "settings/radiosity.rs"]
 mod radiosity;
+#[path = "objects/revolve.rs"]
 mod revolve;
+#[path = "core/scope.rs"]
 mod scope;
+#[path = "objects/shapes.rs"]
 mod shapes;
+#[path = "objects/shapes_more.rs"]
 mod shapes_more;
+#[path = "animation/spline.rs"]
 mod spline;
+#[path = "materials/subsurface.rs"]
 mod subsurface;
+#[path = "objects/text.rs"]
 mod text;
+#[path = "animation/timeline.rs"]
 mod timeline;
+#[path = "core/trace.rs"]
 mod trace;
+#[path = "core/value.rs"]
 pub mod value;
+#[path = "core/vocabulary.rs"]
 mod vocabulary;
+#[path = "materials/warps.rs"]
 mod warps;
 
 pub use budget::Interrupt;
