@@ -19,12 +19,12 @@
 //! camera goes over the top and comes out upside down, as a real one on that path
 //! would). That walk depends only on the time, so every frame and shard agrees.
 
-use super::cursor::{Cursor, Sink};
 use super::keyframe::Keyframes;
 use super::spline::Spline;
-use super::value::{CameraSpec, Value};
-use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Sink};
+use crate::eval::core::value::{CameraSpec, Value};
+use crate::eval::core::{Evaluator, Fail, R};
 use crate::syntax::ast::{Block, Item};
 use glam::DVec3;
 use std::rc::Rc;

@@ -13,11 +13,11 @@
 //! }
 //! ```
 
-use super::cursor::{Cursor, Tok};
 use super::spline::{hermite, Spline, SplineKind};
-use super::value::{colour_from_array, colour_to_array, Value, Vector};
-use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::{colour_from_array, colour_to_array, Value, Vector};
+use crate::eval::core::{Evaluator, R};
 use crate::span::Span;
 
 /// How time runs within one piece between two keys.
@@ -542,7 +542,7 @@ impl Evaluator<'_> {
             Value::Float(f) => ([*f, 0.0, 0.0, 0.0, 0.0], KeyKind::Float),
             Value::Vector(vec) => (vec.c, KeyKind::Vector(vec.len)),
             Value::Colour(col) => (colour_to_array(col), KeyKind::Colour),
-            Value::Poison => return Err(super::Fail::silent()),
+            Value::Poison => return Err(crate::eval::core::Fail::silent()),
             other => return Err(self.mismatch("a float, a vector or a colour", other, span)),
         })
     }

@@ -16,10 +16,10 @@
 //!   the ends);
 //! - outside its range every spline holds its end value.
 
-use super::cursor::{Cursor, Tok};
-use super::value::{Value, Vector};
-use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::{Value, Vector};
+use crate::eval::core::{Evaluator, R};
 use crate::span::Span;
 use std::rc::Rc;
 
@@ -247,7 +247,7 @@ impl Evaluator<'_> {
                     dim = s.dim;
                     points = s.points.clone();
                 }
-                Tok::Val(Value::Poison, _) => return Err(super::Fail::silent()),
+                Tok::Val(Value::Poison, _) => return Err(crate::eval::core::Fail::silent()),
                 Tok::Val(tv, ts) => {
                     let t = self.to_float(&tv, ts)?;
                     c.comma();
@@ -255,7 +255,7 @@ impl Evaluator<'_> {
                     let (vals, len) = match &v {
                         Value::Float(f) => ([*f, *f, 0.0, 0.0, 0.0], 2u8),
                         Value::Vector(vec) => (vec.c, vec.len),
-                        Value::Colour(col) => (super::value::colour_to_array(col), 5),
+                        Value::Colour(col) => (crate::eval::core::value::colour_to_array(col), 5),
                         other => return Err(self.mismatch("a float or a vector", other, vs)),
                     };
                     if let Some((_, prev)) = first_t.iter().find(|(pt, _)| *pt == t) {

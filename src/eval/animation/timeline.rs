@@ -13,9 +13,9 @@
 //! }
 //! ```
 
-use super::cursor::{Cursor, Tok};
-use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::{Evaluator, R};
 use crate::scene::Timeline;
 use crate::span::Span;
 

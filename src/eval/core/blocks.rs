@@ -1,10 +1,10 @@
 //! Dispatch from a block's keyword to the code that evaluates it.
 
 use super::cursor::{Cursor, Sink, Tok};
-use super::objects::OBJECT_BLOCKS;
 use super::value::Value;
 use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::objects::object::OBJECT_BLOCKS;
 use crate::syntax::ast::Block;
 
 /// Blocks this release evaluates besides the objects ([`OBJECT_BLOCKS`]).

@@ -8,7 +8,7 @@
 //!
 //! Written files are kept in memory until `#fclose` (or the end of the scene), then
 //! stored in the evaluation's file overlay, which later `#include`s and `#fopen … read`
-//! see. Only when [`super::EvalOptions::write_files`] is set (rendering) do they reach
+//! see. Only when [`crate::eval::EvalOptions::write_files`] is set (rendering) do they reach
 //! the disk, so `rts check` and the editor never write files.
 
 use super::file_data::{format_g, line_col, next_value, skip_separators, write_binary};

@@ -1,5 +1,5 @@
 //! `function { EXPR }` and `function(a, b) { EXPR }`: compiling the body to a
-//! [`Program`](super::program) once, when the function is declared.
+//! [`Program`](crate::eval::function::program) once, when the function is declared.
 //!
 //! Parts of the body that do not depend on the parameters (declared floats,
 //! `pi`, `V.x`, macro calls, calls of other functions with constant arguments)
@@ -7,11 +7,11 @@
 //! captures declared values when it parses a function. The rest compiles to
 //! stack operations; a call of a macro whose body is one expression is inlined.
 
-use super::program::{max_depth, Body, Function, Op, MAX_CALL_DEPTH, MAX_STACK};
+use super::cursor::{Cursor, Tok};
+use super::value::Value;
+use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
-use crate::eval::cursor::{Cursor, Tok};
-use crate::eval::value::Value;
-use crate::eval::{Evaluator, Fail, R};
+use crate::eval::function::program::{max_depth, Body, Function, Op, MAX_CALL_DEPTH, MAX_STACK};
 use crate::span::Span;
 use crate::syntax::ast::{Arg, BinOp, Block, Expr, ExprKind, Item, Keyword, UnOp};
 use crate::syntax::Sym;
@@ -234,7 +234,7 @@ impl Evaluator<'_> {
 
     /// Whether `#declare NAME = function { internal(NUMBER) }` is POV-Ray's own
     /// functions.inc declaring one of its built-ins that rts does not have (an
-    /// `f_` name, as [`super::super::items::pov_function`] reads them): the
+    /// `f_` name, as [`super::items::pov_function`] reads them): the
     /// declaration is then left out, so POV-Ray's include file can be read and a
     /// use of that name says rts lacks it.
     pub(crate) fn foreign_internal(&mut self, b: &Block, name: Sym) -> bool {
@@ -252,7 +252,9 @@ impl Evaluator<'_> {
             .is_some_and(|r| r.starts_with(|c: char| c.is_ascii_lowercase()));
         k.name == "internal"
             && pov_name
-            && !super::internal::INTERNALS.iter().any(|(m, _, _)| *m == &*n)
+            && !crate::eval::function::internal::INTERNALS
+                .iter()
+                .any(|(m, _, _)| *m == &*n)
             && matches!(self.expr(e), Ok(Value::Float(_)))
     }
 
@@ -265,7 +267,7 @@ impl Evaluator<'_> {
         let v = self.expr(e)?;
         let name = match (&v, self.declaring_function) {
             (Value::Float(_), Some(declared))
-                if super::internal::INTERNALS
+                if crate::eval::function::internal::INTERNALS
                     .iter()
                     .any(|(m, _, _)| *m == &*declared.name()) =>
             {
@@ -288,7 +290,7 @@ impl Evaluator<'_> {
             }
             _ => self.to_str(&v, e.span)?,
         };
-        let Some(&(_, n, f)) = super::internal::INTERNALS
+        let Some(&(_, n, f)) = crate::eval::function::internal::INTERNALS
             .iter()
             .find(|(m, _, _)| *m == &*name)
         else {
@@ -300,7 +302,9 @@ impl Evaluator<'_> {
             .with_help_opt(
                 crate::diag::did_you_mean(
                     &name,
-                    super::internal::INTERNALS.iter().map(|(m, _, _)| *m),
+                    crate::eval::function::internal::INTERNALS
+                        .iter()
+                        .map(|(m, _, _)| *m),
                 )
                 .map(|s| format!("did you mean `{s}`?")),
             )
@@ -557,10 +561,7 @@ impl Evaluator<'_> {
                         span,
                         format!("`{text}` does not take {} arguments", exprs.len()),
                     )
-                    .with_help(format!(
-                        "call it as {}",
-                        crate::eval::builtins::signature(&text)
-                    ))
+                    .with_help(format!("call it as {}", super::builtins::signature(&text)))
                 } else {
                     Diagnostic::error(
                         codes::UNSUPPORTED,
@@ -744,7 +745,7 @@ impl Evaluator<'_> {
         Ok(if let Body::Spline(s) = &f.body {
             s.value_at(vals[0])
         } else if f.is_colour() {
-            Value::Colour(crate::eval::value::colour_from_array(f.colour(&vals)))
+            Value::Colour(super::value::colour_from_array(f.colour(&vals)))
         } else {
             Value::Float(f.eval(&vals))
         })

@@ -25,14 +25,20 @@ pub const STDLIB: &[(&str, &str)] = &[
     ("rand.inc", include_str!("../../stdlib/rand.inc")),
     ("shapes.inc", include_str!("../../stdlib/shapes.inc")),
     ("shapes2.inc", include_str!("../../stdlib/shapes2.inc")),
-    ("shapes_old.inc", include_str!("../../stdlib/shapes_old.inc")),
+    (
+        "shapes_old.inc",
+        include_str!("../../stdlib/shapes_old.inc"),
+    ),
     ("shapesq.inc", include_str!("../../stdlib/shapesq.inc")),
     ("skies.inc", include_str!("../../stdlib/skies.inc")),
     ("stdinc.inc", include_str!("../../stdlib/stdinc.inc")),
     ("stones.inc", include_str!("../../stdlib/stones.inc")),
     ("strings.inc", include_str!("../../stdlib/strings.inc")),
     ("textures.inc", include_str!("../../stdlib/textures.inc")),
-    ("transforms.inc", include_str!("../../stdlib/transforms.inc")),
+    (
+        "transforms.inc",
+        include_str!("../../stdlib/transforms.inc"),
+    ),
     ("woodmaps.inc", include_str!("../../stdlib/woodmaps.inc")),
     ("woods.inc", include_str!("../../stdlib/woods.inc")),
 ];

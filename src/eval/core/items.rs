@@ -1,8 +1,9 @@
 //! Expanding items into evaluated [`Tok`]s, placing them in the scene, and macros.
 
+use super::builtins;
 use super::cursor::{Sink, Tok};
 use super::value::Value;
-use super::{builtins, Evaluator, Fail, R};
+use super::{Evaluator, Fail, R};
 use crate::diag::{codes, did_you_mean, Diagnostic, Label};
 use crate::span::Span;
 use crate::syntax::ast::{Arg, Block, DirectiveKind, ExprKind, Item, LValue, MacroDef, Rhs};
@@ -139,7 +140,7 @@ impl Evaluator<'_> {
         let Value::Texture(t) = self.block_value(top)? else {
             return Ok(());
         };
-        let layered = super::materials::layer_texture(below.as_ref(), t, top.span)?;
+        let layered = crate::eval::materials::texture::layer_texture(below.as_ref(), t, top.span)?;
         self.bind(local, target, Value::Texture(layered), top.span)
     }
 
@@ -166,7 +167,7 @@ impl Evaluator<'_> {
                 if o.texture.is_none() {
                     o.texture = Some(self.default_texture.clone());
                 }
-                for l in super::lights::take_lights(&mut o, None) {
+                for l in crate::eval::settings::lights::take_lights(&mut o, None) {
                     self.place(Tok::Block("light_source", Value::Light(Arc::new(l)), span));
                 }
                 self.scene.objects.push(o);

@@ -1,7 +1,7 @@
 //! Identifier scopes: the global table plus one local table per macro call and
 //! include file, searched innermost first.
 
-use super::Value;
+use super::value::Value;
 use crate::span::Span;
 use crate::syntax::Sym;
 use rustc_hash::FxHashMap;
@@ -70,14 +70,14 @@ impl Scopes {
     }
 
     /// The global bindings, with a short display of simple values (for editors).
-    pub(crate) fn globals(&self) -> Vec<super::Declared> {
+    pub(crate) fn globals(&self) -> Vec<crate::eval::Declared> {
         let fmt = |v: &[f64]| {
             let parts: Vec<String> = v.iter().map(|c| format!("{c}")).collect();
             format!("<{}>", parts.join(", "))
         };
         self.frames[0]
             .iter()
-            .map(|(n, b)| super::Declared {
+            .map(|(n, b)| crate::eval::Declared {
                 name: n.name().to_string(),
                 span: b.span,
                 kind: b.value.kind(),

@@ -173,7 +173,7 @@ pub enum Value {
     /// A `scattering { … }` (only meaningful inside a media).
     Scattering(crate::scene::Scattering),
     /// A `material { … }`.
-    Material(Arc<super::material_block::Material>),
+    Material(Arc<crate::eval::materials::material_block::Material>),
     /// A transform.
     Transform(Arc<Transform>),
     /// `reflection { … }` (only meaningful inside a finish).
@@ -198,9 +198,9 @@ pub enum Value {
     /// A macro.
     Macro(Rc<MacroDef>),
     /// A `spline { }`, called as `S(t)`.
-    Spline(Rc<super::spline::Spline>),
+    Spline(Rc<crate::eval::animation::spline::Spline>),
     /// A `function { }`, called as `F(x, y, z)`.
-    Function(Arc<super::function::Function>),
+    Function(Arc<crate::eval::function::Function>),
     /// A file opened by `#fopen`.
     File(Rc<std::cell::RefCell<super::file_io::OpenFile>>),
     /// A `warp { … }` (only meaningful inside a pattern).

@@ -1,15 +1,15 @@
 //! Which keywords each block accepts, from the same lists the evaluator checks against;
 //! editors use it to complete only what is valid where the cursor is.
 
-use super::atmosphere::{FOG_ITEMS, SKY_ITEMS};
 use super::blocks::is_evaluated_block;
-use super::camera::{CAMERA_ITEMS, GLOBAL_ITEMS};
-use super::lights::LIGHT_ITEMS;
-use super::materials::{
+use crate::eval::materials::texture::{
     normal_items, pigment_items, texture_items, FINISH_ITEMS, IMAGE_MAP_ITEMS, INTERIOR_ITEMS,
     REFLECTION_ITEMS,
 };
-use super::objects::{OBJECT_MODIFIERS, TRANSFORMS};
+use crate::eval::objects::object::{OBJECT_MODIFIERS, TRANSFORMS};
+use crate::eval::settings::atmosphere::{FOG_ITEMS, SKY_ITEMS};
+use crate::eval::settings::camera::{CAMERA_ITEMS, GLOBAL_ITEMS};
+use crate::eval::settings::lights::LIGHT_ITEMS;
 
 /// Blocks that stand at top level: objects, camera, lights and scene settings.
 pub const TOP_LEVEL_KEYWORDS: &[&str] = &[
@@ -96,13 +96,13 @@ pub fn block_keywords(block: &str) -> Option<Vec<&'static str>> {
         "camera" => CAMERA_ITEMS.to_vec(),
         "light_source" => LIGHT_ITEMS.to_vec(),
         "global_settings" => GLOBAL_ITEMS.to_vec(),
-        "path_tracing" => super::path_tracing::PATH_ITEMS.to_vec(),
-        "radiosity" => super::radiosity::RADIOSITY_ITEMS.to_vec(),
+        "path_tracing" => crate::eval::settings::path_tracing::PATH_ITEMS.to_vec(),
+        "radiosity" => crate::eval::settings::radiosity::RADIOSITY_ITEMS.to_vec(),
         "sky_sphere" => SKY_ITEMS.to_vec(),
         "fog" => FOG_ITEMS.to_vec(),
-        "rainbow" => super::atmosphere::RAINBOW_ITEMS.to_vec(),
-        "media" => super::media::MEDIA_ITEMS.to_vec(),
-        "scattering" => super::media::SCATTERING_ITEMS.to_vec(),
+        "rainbow" => crate::eval::settings::atmosphere::RAINBOW_ITEMS.to_vec(),
+        "media" => crate::eval::settings::media::MEDIA_ITEMS.to_vec(),
+        "scattering" => crate::eval::settings::media::SCATTERING_ITEMS.to_vec(),
         "density" => pigment_items(),
         "transform" => TRANSFORMS.to_vec(),
         "color_map" | "colour_map" | "density_map" | "pigment_map" | "texture_map"
@@ -120,19 +120,19 @@ pub fn block_keywords(block: &str) -> Option<Vec<&'static str>> {
         ],
         "cylinder" | "cone" => vec!["open"],
         "prism" => {
-            let mut v = super::shapes::PRISM_ITEMS.to_vec();
+            let mut v = crate::eval::objects::shapes::PRISM_ITEMS.to_vec();
             v.push("open");
             v
         }
         "height_field" => vec!["png", "smooth", "water_level"],
-        "text" => super::text::TEXT_ITEMS.to_vec(),
+        "text" => crate::eval::objects::text::TEXT_ITEMS.to_vec(),
         "bicubic_patch" => {
-            let mut v = super::shapes_more::PATCH_ITEMS.to_vec();
+            let mut v = crate::eval::objects::shapes_more::PATCH_ITEMS.to_vec();
             v.push("uv_vectors");
             v
         }
-        "julia_fractal" => super::shapes_more::JULIA_ITEMS.to_vec(),
-        "sphere_sweep" => super::shapes_more::SWEEP_ITEMS.to_vec(),
+        "julia_fractal" => crate::eval::objects::shapes_more::JULIA_ITEMS.to_vec(),
+        "sphere_sweep" => crate::eval::objects::shapes_more::SWEEP_ITEMS.to_vec(),
         "clipped_by" | "bounded_by" => OBJECTS.to_vec(),
         "union" | "merge" | "intersection" | "difference" => OBJECTS.to_vec(),
         "looks_like" | "projected_through" => OBJECTS.to_vec(),

@@ -3,11 +3,7 @@
 //! patterns and calls in expressions run; and the built-ins of our
 //! `functions.inc` ([`internal`]).
 
-#[path = "../core/function.rs"]
-mod compile;
 pub mod internal;
-#[path = "../objects/isosurface.rs"]
-pub(crate) mod isosurface;
 pub mod program;
 
 pub use program::{Body, Function, Op};

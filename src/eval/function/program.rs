@@ -78,7 +78,7 @@ pub enum Body {
     /// `function { pattern { … } }`: the pattern's value at `<x, y, z>` in [0, 1].
     Pattern(Arc<Pigment>),
     /// `function { spline { … } }`: the spline's value (a vector) at the argument.
-    Spline(Arc<crate::eval::spline::Spline>),
+    Spline(Arc<crate::eval::animation::spline::Spline>),
 }
 
 /// A compiled function.

@@ -1,10 +1,10 @@
 //! `material { texture { … } interior { … } transforms }`: a texture and an interior
 //! declared and applied together.
 
-use super::cursor::{Cursor, Tok};
-use super::objects::TRANSFORMS;
-use super::value::Value;
-use super::{Evaluator, R};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::Value;
+use crate::eval::core::{Evaluator, R};
+use crate::eval::objects::object::TRANSFORMS;
 use crate::scene::{Interior, Texture, Transform};
 use std::sync::Arc;
 
@@ -54,7 +54,7 @@ impl Evaluator<'_> {
         while let Some(tok) = c.next() {
             let r: R<()> = match tok {
                 Tok::Block(_, Value::Texture(t), span) => {
-                    super::materials::layer_texture(m.texture.as_ref(), t, span)
+                    super::texture::layer_texture(m.texture.as_ref(), t, span)
                         .map(|t| m.texture = Some(t))
                 }
                 Tok::Block(_, Value::Interior(i), _) => {

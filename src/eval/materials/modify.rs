@@ -6,11 +6,11 @@
 //! [`Tok::Deferred`] while their texture or object is expanded, and evaluated here
 //! once the reader knows what they modify, so their items run exactly once.
 
-use super::cursor::{Cursor, Deferred, Sink, Tok};
-use super::objects::TRANSFORMS;
 use super::patterns::{MODIFIERS, PATTERNS};
-use super::value::Value;
-use super::Evaluator;
+use crate::eval::core::cursor::{Cursor, Deferred, Sink, Tok};
+use crate::eval::core::value::Value;
+use crate::eval::core::Evaluator;
+use crate::eval::objects::object::TRANSFORMS;
 use std::sync::Arc;
 
 /// Whether a `kw` block whose first item is `first` modifies the one in force

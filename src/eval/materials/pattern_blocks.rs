@@ -2,12 +2,12 @@
 //! `slope { … }` (patterns written as blocks), `normal_map`, `slope_map`,
 //! `bump_map` and `material_map`.
 
-use super::cursor::{Cursor, Tok};
-use super::images::ImageFail;
 use super::patterns::map_entry_value;
-use super::value::Value;
-use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::images::ImageFail;
+use crate::eval::core::value::Value;
+use crate::eval::core::{Evaluator, Fail, R};
 use crate::scene::{
     ImageMap, ImagePattern, ImageUse, InsideTest, Normal, NormalBlend, PatternKind, PatternMods,
     PatternedTexture, SlopeSpec, Texture, TextureEntries, Transfer,
@@ -497,10 +497,10 @@ impl Evaluator<'_> {
         let mut entries = Vec::new();
         while let Some(tok) = c.next() {
             match tok {
-                Tok::Kw(kw, span) if super::objects::TRANSFORMS.contains(&kw) => {
+                Tok::Kw(kw, span) if crate::eval::objects::object::TRANSFORMS.contains(&kw) => {
                     let t = self.transform_kw(kw, span, c)?;
                     let o = Arc::make_mut(&mut object);
-                    super::objects::apply_transform(o, &t);
+                    crate::eval::objects::object::apply_transform(o, &t);
                 }
                 t => entries.push(t),
             }
@@ -509,7 +509,7 @@ impl Evaluator<'_> {
         let test = InsideTest(Arc::new(move |p| world.inside(p)));
         Ok(Value::ObjectPattern(std::rc::Rc::new((
             PatternKind::Object(test),
-            super::value::ObjectPatternEntries(entries),
+            crate::eval::core::value::ObjectPatternEntries(entries),
         ))))
     }
 }

@@ -1,10 +1,10 @@
 //! Pattern keywords inside `pigment` and `normal`: the pattern, its modifiers,
 //! `color_map`, `pigment_map` and list entries.
 
-use super::cursor::{Cursor, Tok};
-use super::value::Value;
-use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::Value;
+use crate::eval::core::{Evaluator, Fail, R};
 use crate::scene::{Colour, PatternKind, PatternMap, PatternMods, Pigment, Wave};
 use glam::DVec3;
 use std::sync::Arc;

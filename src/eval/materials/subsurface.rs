@@ -3,9 +3,9 @@
 //! them so that scenes using them render, warns once per block that they are
 //! ignored, and renders the surfaces without the light carried under them.
 
-use super::cursor::{Cursor, Tok};
-use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::{Evaluator, R};
 use crate::span::Span;
 
 /// What a `subsurface` block holds: `translucency COLOUR` (in a finish or

@@ -1,14 +1,14 @@
 //! `texture`, `pigment`, `finish` and `reflection` blocks.
 
-use super::cursor::{Cursor, Tok};
-use super::images::ImageFail;
-use super::objects::TRANSFORMS;
 use super::patterns::map_entry_value;
 use super::patterns::PatternSpec;
 use super::patterns::{default_map, MODIFIERS, PATTERNS};
-use super::value::Value;
-use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::images::ImageFail;
+use crate::eval::core::value::Value;
+use crate::eval::core::{Evaluator, Fail, R};
+use crate::eval::objects::object::TRANSFORMS;
 use crate::scene::{
     compose, Colour, Finish, ImageMap, IndexClear, Interior, Mapped, Normal, NormalBlend, Pattern,
     PatternKind, PatternMap, PatternedTexture, Pigment, Reflection, Texture, TextureEntries,

@@ -1,9 +1,9 @@
 //! `warp { … }` blocks in patterns, and the parameters of the fractal patterns.
 
-use super::cursor::{Cursor, Tok};
 use super::patterns::PatternSpec;
-use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::{Evaluator, R};
 use crate::scene::{MappingWarp, Transform, Warp, WarpStep};
 use glam::DVec3;
 use std::sync::Arc;

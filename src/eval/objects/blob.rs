@@ -7,11 +7,11 @@
 //! is a blob of that one component (its transforms and texture in the
 //! component's own fields), which the blob then takes apart.
 
-use super::cursor::{Cursor, Tok};
-use super::objects::TRANSFORMS;
-use super::value::Value;
-use super::{Evaluator, R};
+use super::object::TRANSFORMS;
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::Value;
+use crate::eval::core::{Evaluator, R};
 use crate::scene::{BlobComponent, BlobData, BlobKind, Object, Shape};
 use crate::span::Span;
 use std::sync::Arc;
@@ -219,7 +219,7 @@ fn blob_of(threshold: f64, components: Vec<BlobComponent>) -> Shape {
 }
 
 /// A component or threshold after the blob's modifiers (POV-Ray: a parse error).
-fn late(kw: &str, span: Span) -> super::Fail {
+fn late(kw: &str, span: Span) -> crate::eval::core::Fail {
     Diagnostic::error(
         codes::UNEXPECTED_ITEM,
         span,

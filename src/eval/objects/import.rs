@@ -3,9 +3,9 @@
 //! Files are found like include files (the scene's folder, then `-I` folders)
 //! and must lie inside the read sandbox.
 
-use super::cursor::Cursor;
-use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::Cursor;
+use crate::eval::core::{Evaluator, R};
 use crate::scene::{MeshData, Object, Shape};
 use crate::span::Span;
 use std::sync::Arc;
@@ -15,7 +15,7 @@ impl Evaluator<'_> {
     fn file_name(&mut self, c: &mut Cursor, what: &str) -> R<(String, Span)> {
         let (v, s) = c.value(what)?;
         match v {
-            super::value::Value::Str(t) => Ok((t.to_string(), s)),
+            crate::eval::core::value::Value::Str(t) => Ok((t.to_string(), s)),
             other => Err(self.mismatch("a file name in quotes", &other, s)),
         }
     }
@@ -29,7 +29,7 @@ impl Evaluator<'_> {
         if let Some(m) = self.mesh_cache.file(&path) {
             return Ok(m);
         }
-        let bad = |e: String| -> super::Fail {
+        let bad = |e: String| -> crate::eval::core::Fail {
             Diagnostic::error(
                 codes::FILE_NOT_FOUND,
                 span,
@@ -106,7 +106,7 @@ impl Evaluator<'_> {
         if let Some(m) = self.mesh_cache.file(&path) {
             return Ok(m);
         }
-        let bad = |e: String| -> super::Fail {
+        let bad = |e: String| -> crate::eval::core::Fail {
             Diagnostic::error(
                 codes::FILE_NOT_FOUND,
                 span,
@@ -168,12 +168,15 @@ impl Evaluator<'_> {
     /// two triangles per cell, as POV-Ray does; solid below the surface.
     pub(crate) fn height_field(&mut self, c: &mut Cursor) -> R<Object> {
         let span = c.span;
-        let (grid, w, h) =
-            if let Some(super::cursor::Tok::Val(super::value::Value::Float(_), _)) = c.peek() {
-                self.height_field_function(c)?
-            } else {
-                self.height_field_image(c)?
-            };
+        let (grid, w, h) = if let Some(crate::eval::core::cursor::Tok::Val(
+            crate::eval::core::value::Value::Float(_),
+            _,
+        )) = c.peek()
+        {
+            self.height_field_function(c)?
+        } else {
+            self.height_field_image(c)?
+        };
         self.height_field_mesh(c, span, &grid, w, h)
     }
 
@@ -181,12 +184,15 @@ impl Evaluator<'_> {
     fn height_field_image(&mut self, c: &mut Cursor) -> R<(Vec<f32>, usize, usize)> {
         let span = c.span;
         match c.peek() {
-            Some(super::cursor::Tok::Kw("png", _)) => {
+            Some(crate::eval::core::cursor::Tok::Kw("png", _)) => {
                 c.next();
             }
             // POV-Ray 3.7 also takes the file alone and reads its type from
             // its extension.
-            Some(super::cursor::Tok::Val(super::value::Value::Str(_), _)) => {}
+            Some(crate::eval::core::cursor::Tok::Val(
+                crate::eval::core::value::Value::Str(_),
+                _,
+            )) => {}
             _ => {
                 let other = c.next();
                 let s = other.as_ref().map_or(span, |t| t.span());
@@ -202,8 +208,8 @@ impl Evaluator<'_> {
         let (name, fspan) = self.file_name(c, "the PNG file's name")?;
         let path = self.data_file(&name, fspan, "height map")?;
         let picture = self.picture(&path, &name, fspan).map_err(|e| match e {
-            super::images::ImageFail::Fail(f) => f,
-            super::images::ImageFail::Read(e) => super::Fail::from(
+            crate::eval::core::images::ImageFail::Fail(f) => f,
+            crate::eval::core::images::ImageFail::Read(e) => crate::eval::core::Fail::from(
                 Diagnostic::error(
                     codes::FILE_NOT_FOUND,
                     fspan,
@@ -214,7 +220,7 @@ impl Evaluator<'_> {
         })?;
         // The grey levels as the image decoder converts colours (a temporary
         // 16-bit copy; the mesh made from it is larger still).
-        let img = super::images::to_dynamic(&picture);
+        let img = crate::eval::core::images::to_dynamic(&picture);
         drop(picture);
         let grey = img.to_luma16();
         let (w, h) = (grey.width() as usize, grey.height() as usize);
@@ -249,11 +255,11 @@ impl Evaluator<'_> {
         let mut water = 0.0f64;
         loop {
             match c.peek() {
-                Some(super::cursor::Tok::Kw("smooth", _)) => {
+                Some(crate::eval::core::cursor::Tok::Kw("smooth", _)) => {
                     c.next();
                     smooth = true;
                 }
-                Some(super::cursor::Tok::Kw("water_level", _)) => {
+                Some(crate::eval::core::cursor::Tok::Kw("water_level", _)) => {
                     c.next();
                     water = self.take_float(c, "the water level (0 to 1)")?;
                 }

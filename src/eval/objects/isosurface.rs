@@ -3,9 +3,9 @@
 
 use crate::build::shapes::isosurface::{Container, Isosurface};
 use crate::diag::{codes, Diagnostic};
-use crate::eval::cursor::{Cursor, Tok};
-use crate::eval::value::Value;
-use crate::eval::{Evaluator, Fail, R};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::Value;
+use crate::eval::core::{Evaluator, Fail, R};
 use crate::scene::Shape;
 use crate::span::Span;
 use glam::DVec3;

@@ -2,12 +2,12 @@
 //! … face_indices … }`: triangles stored once ([`MeshData`], f32 positions, u32
 //! indices) and shared by every object made from the declared mesh.
 
-use super::cursor::{Cursor, Tok};
-use super::list::{Elem, List};
 use super::shapes::Listed;
-use super::value::Value;
-use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::list::{Elem, List};
+use crate::eval::core::value::Value;
+use crate::eval::core::{Evaluator, R};
 use crate::scene::{MeshData, Object, Shape, Texture};
 use crate::span::Span;
 use glam::{DVec2, DVec3};
@@ -473,7 +473,7 @@ impl Evaluator<'_> {
     }
 }
 
-fn out_of_range(s: Span, i: f64, count: usize, of: &str) -> super::Fail {
+fn out_of_range(s: Span, i: f64, count: usize, of: &str) -> crate::eval::core::Fail {
     Diagnostic::error(
         codes::INDEX_OUT_OF_RANGE,
         s,

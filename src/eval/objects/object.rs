@@ -1,10 +1,10 @@
 //! Objects: `sphere`, `plane`, `box`, `triangle`, `union`, `object`, and their
 //! modifiers; transforms shared by all blocks.
 
-use super::cursor::{Cursor, Tok};
-use super::value::Value;
-use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::Value;
+use crate::eval::core::{Evaluator, Fail, R};
 use crate::scene::{CsgOp, Members, Object, Shape, Texture, Transform};
 use crate::span::Span;
 use glam::{DMat4, DVec4};
@@ -372,12 +372,12 @@ impl Evaluator<'_> {
         match tok {
             Tok::Block(kw, Value::Texture(t), span) if t.patterned.is_none() => {
                 let mut tex = (*t).clone();
-                tex.pigment = super::materials::uv_mapped(std::mem::take(&mut tex.pigment));
+                tex.pigment = crate::eval::materials::texture::uv_mapped(std::mem::take(&mut tex.pigment));
                 Ok(Tok::Block(kw, Value::Texture(Arc::new(tex)), span))
             }
             Tok::Block(kw, Value::Pigment(p), span) => Ok(Tok::Block(
                 kw,
-                Value::Pigment(Arc::new(super::materials::uv_mapped((*p).clone()))),
+                Value::Pigment(Arc::new(crate::eval::materials::texture::uv_mapped((*p).clone()))),
                 span,
             )),
             other => Err(Diagnostic::error(
@@ -414,7 +414,7 @@ impl Evaluator<'_> {
             return Ok(());
         }
         if let (Tok::Kw(kw, _), Shape::Isosurface(iso)) = (&tok, &mut obj.shape) {
-            if super::function::isosurface::ISOSURFACE_ITEMS.contains(kw) {
+            if super::isosurface::ISOSURFACE_ITEMS.contains(kw) {
                 return self.isosurface_late(iso, tok, c);
             }
         }
@@ -439,7 +439,11 @@ impl Evaluator<'_> {
                     .texture
                     .as_ref()
                     .and_then(|t| t.interior_texture.clone());
-                let mut layered = super::materials::layer_texture(obj.texture.as_ref(), top, span)?;
+                let mut layered = crate::eval::materials::texture::layer_texture(
+                    obj.texture.as_ref(),
+                    top,
+                    span,
+                )?;
                 if let Some(inside) = inside {
                     // A texture written after `interior_texture` keeps it.
                     Arc::make_mut(&mut layered).interior_texture = Some(inside);
@@ -449,13 +453,17 @@ impl Evaluator<'_> {
             Tok::Block(kw @ ("pigment" | "normal" | "finish"), _, span)
                 if obj.texture.as_ref().is_some_and(|t| t.patterned.is_some()) =>
             {
-                super::materials::check_not_patterned(obj.texture.as_ref(), kw, span)?;
+                crate::eval::materials::texture::check_not_patterned(
+                    obj.texture.as_ref(),
+                    kw,
+                    span,
+                )?;
             }
             Tok::Block(_, Value::Interior(i), _) => obj.interior = Some(attach_interior(obj, i)),
             Tok::Block(_, Value::Material(m), span) => {
                 if let Some(t) = &m.texture {
                     let top = attach(obj, (**t).clone());
-                    obj.texture = Some(super::materials::layer_texture(
+                    obj.texture = Some(crate::eval::materials::texture::layer_texture(
                         obj.texture.as_ref(),
                         top,
                         span,
@@ -534,7 +542,7 @@ impl Evaluator<'_> {
                 }
             }
             Tok::Block("photons", Value::Photons(b), span) => {
-                self.photons_for(&b, super::photons::PhotonsIn::Object, span);
+                self.photons_for(&b, crate::eval::settings::photons::PhotonsIn::Object, span);
                 let own = b.object;
                 obj.flags.photons = crate::scene::ObjectPhotons {
                     // `no_shadow` makes photons pass unless the block says otherwise.

@@ -1,12 +1,12 @@
 //! `lathe { [SPLINE] N, <x, y>… }` and `sor { N, <r, h>… }`, and the list of
 //! 2-D points they share with `prism`.
 
-use super::cursor::{Cursor, Tok};
-use super::value::Value;
-use super::{Evaluator, R};
 use crate::build::shapes::lathe::{min_points, point_rule, radius_checked, segments};
 use crate::build::shapes::prism::Spline;
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::Value;
+use crate::eval::core::{Evaluator, R};
 use crate::scene::Shape;
 use crate::span::Span;
 use glam::DVec2;

@@ -2,11 +2,11 @@
 //! `smooth_triangle`, `polygon`, `polyhedron`, `prism`, and the list blocks that
 //! hold their data (`vertex_vectors { … }` and friends).
 
-use super::cursor::{Cursor, Tok};
-use super::value::{Array, Value};
-use super::{Evaluator, Fail, R};
 use crate::build::shapes::solid;
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::{Array, Value};
+use crate::eval::core::{Evaluator, Fail, R};
 use crate::scene::{Object, Shape};
 use crate::span::Span;
 use glam::DVec3;
@@ -19,7 +19,7 @@ impl Evaluator<'_> {
     /// A list block (`vertex_vectors`, `face_indices`, `texture_list`, `clipped_by`, …):
     /// its values and blocks in order, commas dropped, as a one-dimensional array.
     pub(crate) fn list_block(&mut self, c: &mut Cursor) -> R<Value> {
-        if super::list::PACKED_LISTS.contains(&c.block) {
+        if crate::eval::core::list::PACKED_LISTS.contains(&c.block) {
             return self.packed_list(c);
         }
         let mut elems = Vec::new();
@@ -49,7 +49,7 @@ impl Evaluator<'_> {
     /// A list block whose numbers and vectors stay packed (`vertex_vectors`,
     /// `face_indices`, …; see `list.rs`), commas dropped.
     fn packed_list(&mut self, c: &mut Cursor) -> R<Value> {
-        let mut list = super::list::List::default();
+        let mut list = crate::eval::core::list::List::default();
         while let Some(t) = c.next() {
             match t {
                 Tok::Comma(_) => {}
@@ -131,7 +131,12 @@ impl Evaluator<'_> {
     /// [`Self::counted`] for a packed list: checks its leading count against
     /// its entries (the elements after it that are not numbers); the entries are
     /// then `list.iter().skip(1)`.
-    pub(crate) fn counted_list(&mut self, kw: &str, list: &super::list::List, span: Span) -> R<()> {
+    pub(crate) fn counted_list(
+        &mut self,
+        kw: &str,
+        list: &crate::eval::core::list::List,
+        span: Span,
+    ) -> R<()> {
         let mut it = list.iter();
         let Some(n) = it.next().and_then(|e| e.float()) else {
             if list.len() == 0 {

@@ -1,12 +1,12 @@
 //! `bicubic_patch`, `julia_fractal` and `sphere_sweep`.
 
-use super::cursor::{Cursor, Tok};
-use super::value::Value;
-use super::{Evaluator, Fail, R};
 use crate::build::shapes::bicubic;
 use crate::build::shapes::julia::{Algebra, Julia, JuliaFn};
 use crate::build::shapes::sweep::{SphereSweep, SweepSpline};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::Value;
+use crate::eval::core::{Evaluator, Fail, R};
 use crate::scene::{Object, Shape};
 use crate::span::Span;
 use glam::{DVec2, DVec3, DVec4};

@@ -3,11 +3,11 @@
 //! lookup, a font cache, and the layout into glyph prisms
 //! ([`crate::build::shapes::text`]).
 
-use super::cursor::{Cursor, Tok};
-use super::value::Value;
-use super::{Evaluator, R};
 use crate::build::shapes::text::Font;
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::Value;
+use crate::eval::core::{Evaluator, R};
 use crate::scene::{Shape, TextData};
 use crate::span::Span;
 use glam::DVec2;

@@ -1,10 +1,10 @@
 //! `sky_sphere { … }`, `fog { … }`, `rainbow { … }` and `looks_like { … }`.
 
-use super::cursor::{Cursor, Tok};
-use super::objects::TRANSFORMS;
-use super::value::Value;
-use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::Value;
+use crate::eval::core::{Evaluator, R};
+use crate::eval::objects::object::TRANSFORMS;
 use crate::scene::{Fog, FogKind, FogTurbulence, Object, Rainbow, SkySphere, Transform};
 use glam::DVec3;
 
@@ -401,7 +401,7 @@ impl Evaluator<'_> {
                 (*o).clone()
             }
             Some(Tok::Block(_, Value::Poison, _) | Tok::Val(Value::Poison, _)) => {
-                return Err(super::Fail::silent())
+                return Err(crate::eval::core::Fail::silent())
             }
             Some(other) => return Err(self.unexpected(c, &other, &["an object"])),
             None => {
@@ -426,7 +426,7 @@ impl Evaluator<'_> {
     fn take_colour_from(&mut self, tok: Tok) -> R<crate::scene::Colour> {
         match tok {
             Tok::Val(v, s) => self.to_colour(&v, s),
-            _ => Err(super::Fail::silent()),
+            _ => Err(crate::eval::core::Fail::silent()),
         }
     }
 }

@@ -1,10 +1,10 @@
 //! `camera`, `light_source`, `global_settings` and `background`.
 
-use super::cursor::{Cursor, Tok};
-use super::objects::TRANSFORMS;
-use super::value::{CameraSpec, Value};
-use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::{CameraSpec, Value};
+use crate::eval::core::{Evaluator, Fail, R};
+use crate::eval::objects::object::TRANSFORMS;
 use crate::scene::{Camera, CameraKind, Transform};
 use crate::span::Span;
 use glam::DVec3;
@@ -437,7 +437,7 @@ impl Evaluator<'_> {
                         c,
                         "the millimetres per scene unit (for subsurface scattering)",
                     )
-                    .map(|_| self.warn(super::subsurface::ignored(span, "`mm_per_unit`"))),
+                    .map(|_| self.warn(crate::eval::materials::subsurface::ignored(span, "`mm_per_unit`"))),
                 Tok::Kw("ambient_light", _) => self
                     .take_colour(c, "the ambient light colour")
                     .map(|x| self.scene.global.ambient_light = x.rgb),

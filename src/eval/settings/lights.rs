@@ -1,10 +1,10 @@
 //! `light_source { … }`: point, spot, cylinder, parallel and area lights.
 
-use super::cursor::{Cursor, Tok};
-use super::objects::TRANSFORMS;
-use super::value::Value;
-use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::Value;
+use crate::eval::core::{Evaluator, Fail, R};
+use crate::eval::objects::object::TRANSFORMS;
 use crate::scene::{AreaLight, Beam, Light, LightKind, Transform};
 use crate::span::Span;
 use std::sync::Arc;
@@ -200,7 +200,7 @@ impl Evaluator<'_> {
                     } else {
                         let mut obj = (*o).clone();
                         let t = Transform::translate(location);
-                        super::objects::apply_transform(&mut obj, &t);
+                        crate::eval::objects::object::apply_transform(&mut obj, &t);
                         light.looks_like = Some(Arc::new(obj));
                         Ok(())
                     }
@@ -327,11 +327,11 @@ impl Evaluator<'_> {
         }
         if let Some(obj) = &mut light.looks_like {
             let o = Arc::make_mut(obj);
-            super::objects::apply_transform(o, &transform);
+            crate::eval::objects::object::apply_transform(o, &transform);
             o.flags.no_shadow = true;
         }
         if let Some(obj) = &mut light.projected_through {
-            super::objects::apply_transform(Arc::make_mut(obj), &transform);
+            crate::eval::objects::object::apply_transform(Arc::make_mut(obj), &transform);
         }
         Ok(light)
     }
@@ -364,7 +364,7 @@ impl Evaluator<'_> {
             .into_iter()
             .flatten()
         {
-            super::objects::apply_transform(Arc::make_mut(obj), &transform);
+            crate::eval::objects::object::apply_transform(Arc::make_mut(obj), &transform);
         }
         Ok(light)
     }

@@ -1,10 +1,10 @@
 //! `media { … }`, `scattering { … }` and `density { … }`.
 
-use super::cursor::{Cursor, Tok};
-use super::objects::TRANSFORMS;
-use super::value::Value;
-use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::Value;
+use crate::eval::core::{Evaluator, Fail, R};
+use crate::eval::objects::object::TRANSFORMS;
 use crate::scene::{Media, Pigment, Scattering, ScatteringKind};
 use crate::span::Span;
 

@@ -1,10 +1,10 @@
 //! `mesh_camera { RAYS DISTRIBUTION MESH… [smooth] }`: POV-Ray 3.7's camera whose
 //! rays start on the faces of meshes.
 
-use super::cursor::{Cursor, Tok};
-use super::value::Value;
-use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::value::Value;
+use crate::eval::core::{Evaluator, R};
 use crate::scene::{CameraMesh, MeshCamera, Object, Shape, UvGrid};
 use crate::span::Span;
 
@@ -89,7 +89,7 @@ impl Evaluator<'_> {
         }
         if meshes.is_empty() {
             // Reported above: only objects that are not meshes.
-            return Err(super::Fail::silent());
+            return Err(crate::eval::core::Fail::silent());
         }
         if let Some(span) = smooth {
             if dist != 3.0 {

@@ -1,9 +1,9 @@
 //! `path_tracing { … }` inside `global_settings` (an rts addition): the path
 //! tracer's settings, see docs/pathtracing.md.
 
-use super::cursor::{Cursor, Tok};
-use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::{Evaluator, R};
 use crate::scene::{PathTracing, PixelFilter};
 use crate::span::Span;
 

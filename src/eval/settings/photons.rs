@@ -3,9 +3,9 @@
 //! light, which photons it shoots. One reader for all three; each place then
 //! takes the items it allows ([`Evaluator::photons_for`]).
 
-use super::cursor::{Cursor, Tok};
-use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::{Evaluator, R};
 use crate::scene::{PhotonDensity, PhotonsBlock};
 use crate::span::Span;
 
@@ -206,7 +206,7 @@ impl Evaluator<'_> {
                 Tok::Kw(kw @ ("save_file" | "load_file"), span) => c.once(kw, span).and_then(|()| {
                     b.items.push((kw, span));
                     let (v, s) = c.value("a file name")?;
-                    if !matches!(v, super::value::Value::Str(_)) {
+                    if !matches!(v, crate::eval::core::value::Value::Str(_)) {
                         return Err(self.mismatch("a file name in quotes", &v, s));
                     }
                     self.warn(

@@ -1,9 +1,9 @@
 //! `radiosity { … }`: in `global_settings`, POV-Ray 3.7's radiosity settings;
 //! in an object, its `importance`.
 
-use super::cursor::{Cursor, Tok};
-use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
+use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::{Evaluator, R};
 use crate::scene::{Radiosity, RadiosityBlock};
 use crate::span::Span;
 
@@ -156,8 +156,10 @@ impl Evaluator<'_> {
                             "always_sample" => r.always_sample = on,
                             "media" => r.media = on,
                             "normal" => r.normal = on,
-                            _ if on => self
-                                .warn(super::subsurface::ignored(span, "radiosity `subsurface`")),
+                            _ if on => self.warn(crate::eval::materials::subsurface::ignored(
+                                span,
+                                "radiosity `subsurface`",
+                            )),
                             _ => {}
                         }
                         Ok(())
