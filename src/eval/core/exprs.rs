@@ -27,7 +27,7 @@ impl Evaluator<'_> {
                     let v = self.expr(p)?;
                     m[i] = self.to_float(&v, p.span)?;
                 }
-                match crate::eval::objects::object::matrix_from_12(&m) {
+                match super::transforms::matrix_from_12(&m) {
                     Some(t) => Ok(Value::Transform(std::sync::Arc::new(t))),
                     None => Err(Diagnostic::error(
                         codes::DEGENERATE_TRANSFORM,

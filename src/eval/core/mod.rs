@@ -21,6 +21,7 @@ pub(crate) mod items;
 pub(crate) mod list;
 pub(crate) mod scope;
 pub(crate) mod trace;
+pub(crate) mod transforms;
 pub mod value;
 pub(crate) mod vocabulary;
 

@@ -2,11 +2,14 @@
 //! editors use it to complete only what is valid where the cursor is.
 
 use super::blocks::is_evaluated_block;
-use crate::eval::materials::texture::{
-    normal_items, pigment_items, texture_items, FINISH_ITEMS, IMAGE_MAP_ITEMS, INTERIOR_ITEMS,
-    REFLECTION_ITEMS,
-};
-use crate::eval::objects::object::{OBJECT_MODIFIERS, TRANSFORMS};
+use super::transforms::TRANSFORMS;
+use crate::eval::materials::finish::{FINISH_ITEMS, REFLECTION_ITEMS};
+use crate::eval::materials::image_map::IMAGE_MAP_ITEMS;
+use crate::eval::materials::interior::INTERIOR_ITEMS;
+use crate::eval::materials::normal::normal_items;
+use crate::eval::materials::pigment::pigment_items;
+use crate::eval::materials::texture::texture_items;
+use crate::eval::objects::modifiers::OBJECT_MODIFIERS;
 use crate::eval::settings::atmosphere::{FOG_ITEMS, SKY_ITEMS};
 use crate::eval::settings::camera::{CAMERA_ITEMS, GLOBAL_ITEMS};
 use crate::eval::settings::lights::LIGHT_ITEMS;

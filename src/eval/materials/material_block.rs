@@ -2,9 +2,9 @@
 //! declared and applied together.
 
 use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::transforms::TRANSFORMS;
 use crate::eval::core::value::Value;
 use crate::eval::core::{Evaluator, R};
-use crate::eval::objects::object::TRANSFORMS;
 use crate::scene::{Interior, Texture, Transform};
 use std::sync::Arc;
 

@@ -8,9 +8,9 @@
 
 use super::patterns::{MODIFIERS, PATTERNS};
 use crate::eval::core::cursor::{Cursor, Deferred, Sink, Tok};
+use crate::eval::core::transforms::TRANSFORMS;
 use crate::eval::core::value::Value;
 use crate::eval::core::Evaluator;
-use crate::eval::objects::object::TRANSFORMS;
 use std::sync::Arc;
 
 /// Whether a `kw` block whose first item is `first` modifies the one in force

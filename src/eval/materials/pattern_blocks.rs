@@ -497,7 +497,7 @@ impl Evaluator<'_> {
         let mut entries = Vec::new();
         while let Some(tok) = c.next() {
             match tok {
-                Tok::Kw(kw, span) if crate::eval::objects::object::TRANSFORMS.contains(&kw) => {
+                Tok::Kw(kw, span) if crate::eval::core::transforms::TRANSFORMS.contains(&kw) => {
                     let t = self.transform_kw(kw, span, c)?;
                     let o = Arc::make_mut(&mut object);
                     crate::eval::objects::object::apply_transform(o, &t);

@@ -7,9 +7,9 @@
 //! is a blob of that one component (its transforms and texture in the
 //! component's own fields), which the blob then takes apart.
 
-use super::object::TRANSFORMS;
 use crate::diag::{codes, Diagnostic};
 use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::transforms::TRANSFORMS;
 use crate::eval::core::value::Value;
 use crate::eval::core::{Evaluator, R};
 use crate::scene::{BlobComponent, BlobData, BlobKind, Object, Shape};

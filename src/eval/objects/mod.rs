@@ -9,6 +9,7 @@ pub(crate) mod import;
 pub(crate) mod isosurface;
 pub(crate) mod mesh;
 pub(crate) mod mesh_cache;
+pub(crate) mod modifiers;
 pub(crate) mod object;
 pub(crate) mod revolve;
 pub(crate) mod shapes;

@@ -2,9 +2,9 @@
 
 use crate::diag::{codes, Diagnostic};
 use crate::eval::core::cursor::{Cursor, Tok};
+use crate::eval::core::transforms::TRANSFORMS;
 use crate::eval::core::value::Value;
 use crate::eval::core::{Evaluator, Fail, R};
-use crate::eval::objects::object::TRANSFORMS;
 use crate::scene::{AreaLight, Beam, Light, LightKind, Transform};
 use crate::span::Span;
 use std::sync::Arc;
