@@ -103,28 +103,11 @@ impl Evaluator<'_> {
         }
         let mut toks = Sink::new();
         toks.packed = super::list::PACKED_LISTS.contains(&kw);
-        // `object { … }` among a pigment's, normal's or texture's items is the
-        // object pattern: its object is read as usual, its pigments (or
-        // normals, textures) are entries, not the object's own.
-        let object_pattern = kw == "object" && self.pattern_items;
-        let outer_pattern = std::mem::replace(
-            &mut self.pattern_items,
-            matches!(kw, "pigment" | "normal" | "texture" | "density"),
-        );
-        let lists = matches!(kw, "poly" | "cubic" | "quartic");
-        let outer = std::mem::replace(&mut self.coefficient_lists, lists);
-        // Texture bodies (also a texture_map's entries) and objects read a
-        // pigment, finish or normal as a change to the one in force.
-        let defer = (matches!(kw, "texture" | "texture_map" | "interior_texture")
-            || OBJECT_BLOCKS.contains(&kw))
-            && !object_pattern;
-        let outer_defer = std::mem::replace(&mut self.defer_material_blocks, defer);
-        let in_blob = std::mem::replace(&mut self.blob_items, kw == "blob");
-        self.expand(&b.items, &mut toks);
-        self.blob_items = in_blob;
-        self.defer_material_blocks = outer_defer;
-        self.coefficient_lists = outer;
-        self.pattern_items = outer_pattern;
+        let outer = self.ctx;
+        let object_pattern = outer.is_object_pattern(kw);
+        self.within(outer.items_of(kw, object_pattern), |ev| {
+            ev.expand(&b.items, &mut toks);
+        });
         let mut c = Cursor::new(toks.toks, kw, b.span);
         if object_pattern {
             return self.object_pattern(&mut c).map(Some);
@@ -135,7 +118,7 @@ impl Evaluator<'_> {
             ))));
         }
         Ok(Some(match kw {
-            "sphere" | "cylinder" if in_blob => {
+            kw if outer.is_blob_component(kw) => {
                 Value::Object(std::sync::Arc::new(self.blob_component(&mut c)?))
             }
             kw if OBJECT_BLOCKS.contains(&kw) => {

@@ -1,5 +1,6 @@
 //! The directives: `#declare`, `#if`, loops, `#macro`, `#include`, messages, `#default`.
 
+use super::context::Context;
 use super::cursor::{Cursor, Sink, Tok};
 use super::value::Value;
 use super::{Evaluator, Fail, R};
@@ -34,10 +35,11 @@ impl Evaluator<'_> {
                         if self.foreign_internal(b, target.name) {
                             return Ok(());
                         }
-                        let outer = self.declaring_function.replace(target.name);
-                        let v = self.block_value(b);
-                        self.declaring_function = outer;
-                        v
+                        let ctx = Context {
+                            declaring_function: Some(target.name),
+                            ..self.ctx
+                        };
+                        self.within(ctx, |ev| ev.block_value(b))
                     }
                     Rhs::Block(b) => self.block_value(b),
                     Rhs::Expr(e) => self.expr(e),

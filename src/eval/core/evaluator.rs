@@ -3,6 +3,7 @@
 //! (unused names, gamma, lights).
 
 use super::budget::Spent;
+use super::context::Context;
 use super::file_io::{OpenFile, Overlay};
 use super::images::ImageCache;
 use super::scope::Scopes;
@@ -73,29 +74,10 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) fonts: FontCache,
     /// Data files found (for the animation manifest's scene hash).
     pub(crate) data_files: std::cell::RefCell<Vec<PathBuf>>,
-    /// Set while the items of a `poly`, `cubic` or `quartic` block are read:
-    /// there, a vector of more than 5 numbers (other than a 12-number matrix) is
-    /// a list of coefficients (a one-dimensional array).
-    pub(crate) coefficient_lists: bool,
-    /// Set while the items of a texture (or a texture_map's entries) or an object
-    /// are read: there a
-    /// `pigment`, `finish` or `normal` block modifies the one in force, as in
-    /// POV-Ray, so it is kept unevaluated ([`super::cursor::Tok::Deferred`]) until the
-    /// reader knows what it modifies (see `modify.rs`).
-    pub(crate) defer_material_blocks: bool,
+    /// What the items being expanded are inside (see `context.rs`).
+    pub(crate) ctx: Context,
     /// Objects built for `trace`, `min_extent` and `max_extent`.
     pub(crate) built_objects: BuiltObjects,
-    /// Set while the items of a `blob` are read: there a `sphere` or `cylinder`
-    /// block is a blob component (see `blob.rs`).
-    pub(crate) blob_items: bool,
-    /// Set while a media's `density { }` is read: it starts from density 1.
-    pub(crate) density_block: bool,
-    /// The name a `#declare NAME = function { … }` being evaluated binds: POV-Ray's
-    /// functions.inc declares its built-ins as `function { internal(NUMBER) }`,
-    /// and rts knows them by that name, not by POV-Ray's private numbers.
-    pub(crate) declaring_function: Option<crate::syntax::Sym>,
-    /// A `function { }` met as a pattern, until the pattern reader takes it.
-    pub(crate) pending_function: Option<Arc<crate::eval::function::Function>>,
     /// Files written by `#write` in this evaluation (see `file_io.rs`).
     pub(crate) written: Overlay,
     /// Bytes the files being written hold so far, all together (see
@@ -111,12 +93,6 @@ pub(crate) struct Evaluator<'a> {
     /// Names whose last `#fopen` failed (and was reported): their `#read` and
     /// `#write` report nothing more.
     pub(crate) files_failed: rustc_hash::FxHashSet<crate::syntax::Sym>,
-    /// The pattern of a pattern block (`pigment_pattern { … }`) just met among a
-    /// pigment's, normal's or texture's items (see `block_pattern_token`).
-    pub(crate) pending_pattern: Option<crate::scene::PatternKind>,
-    /// Set while the items of a `pigment`, `normal`, `texture` or `density`
-    /// are read: there an `object { OBJECT A, B }` block is the object pattern.
-    pub(crate) pattern_items: bool,
     /// `light_group`s made so far (each takes one bit of the objects' masks).
     pub(crate) light_groups: u32,
     /// What the evaluation has spent of its budgets (see `budget.rs`).
@@ -190,21 +166,14 @@ impl<'a> Evaluator<'a> {
             image_pixels: 0,
             data_files: Default::default(),
             fonts: Default::default(),
-            coefficient_lists: false,
-            defer_material_blocks: false,
+            ctx: Context::default(),
             built_objects: Default::default(),
-            blob_items: false,
-            density_block: false,
-            declaring_function: None,
-            pending_function: None,
             written: Default::default(),
             written_bytes: 0,
             open_writes: Vec::new(),
             files_seen: Default::default(),
             files_failed: Default::default(),
             deprecated: Default::default(),
-            pending_pattern: None,
-            pattern_items: false,
             light_groups: 0,
             spent: Spent::start(),
         }

@@ -40,7 +40,7 @@ impl Evaluator<'_> {
                     .into()),
                 }
             }
-            ExprKind::Vector(parts) if self.coefficient_lists && parts.len() > 5 => {
+            ExprKind::Vector(parts) if self.ctx.coefficient_lists && parts.len() > 5 => {
                 // A `poly`/`cubic`/`quartic` coefficient list.
                 let mut elems = Vec::with_capacity(parts.len());
                 for p in parts {

@@ -7,7 +7,6 @@
 //! captures declared values when it parses a function. The rest compiles to
 //! stack operations; a call of a macro whose body is one expression is inlined.
 
-use super::cursor::{Cursor, Tok};
 use super::value::Value;
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
@@ -265,7 +264,7 @@ impl Evaluator<'_> {
     /// numbers are private to POV-Ray and change between versions.
     fn internal_function(&mut self, e: &Expr, arity: Option<usize>, span: Span) -> R<Value> {
         let v = self.expr(e)?;
-        let name = match (&v, self.declaring_function) {
+        let name = match (&v, self.ctx.declaring_function) {
             (Value::Float(_), Some(declared))
                 if crate::eval::function::internal::INTERNALS
                     .iter()
@@ -749,35 +748,5 @@ impl Evaluator<'_> {
         } else {
             Value::Float(f.eval(&vals))
         })
-    }
-}
-
-impl Evaluator<'_> {
-    /// A `function { }` block among a pigment's, normal's or texture's items is
-    /// the `function` pattern: it becomes the keyword, its value waits in
-    /// `pending_function` for [`Evaluator::take_function_pattern`].
-    pub(crate) fn function_pattern_token(&mut self, tok: Tok) -> Tok {
-        match tok {
-            Tok::Block("function", Value::Function(f), span) => {
-                self.pending_function = Some(f);
-                Tok::Kw("function", span)
-            }
-            t => t,
-        }
-    }
-
-    /// The pattern kind of the `function { }` just met (see
-    /// [`Evaluator::function_pattern_token`]).
-    pub(crate) fn take_function_pattern(&mut self, c: &Cursor) -> R<crate::scene::PatternKind> {
-        match self.pending_function.take() {
-            Some(f) => Ok(crate::scene::PatternKind::Function(f)),
-            None => Err(Diagnostic::error(
-                codes::MISSING_VALUE,
-                c.last,
-                "the `function` pattern needs its expression in braces",
-            )
-            .with_help("write `function { x*x + y*y }` or `function { F(x, y, z) }`")
-            .into()),
-        }
     }
 }

@@ -56,7 +56,7 @@ impl Evaluator<'_> {
                 }
             }
             Item::Block(b)
-                if self.defer_material_blocks
+                if self.ctx.defer_material_blocks
                     && matches!(b.keyword.name, "pigment" | "finish" | "normal") =>
             {
                 out.push(Tok::Deferred(Rc::new(super::cursor::Deferred {

@@ -8,6 +8,7 @@
 pub(crate) mod blocks;
 pub(crate) mod budget;
 pub(crate) mod builtins;
+pub(crate) mod context;
 pub(crate) mod cursor;
 pub(crate) mod directives;
 pub(crate) mod evaluator;

@@ -58,19 +58,15 @@ impl Evaluator<'_> {
         let b = &d.block;
         let kw = b.keyword.name;
         let mut sink = Sink::new();
-        // What is inside the block is not itself in a texture or object.
-        let outer = std::mem::replace(&mut self.defer_material_blocks, false);
-        let outer_pattern =
-            std::mem::replace(&mut self.pattern_items, matches!(kw, "pigment" | "normal"));
         let trace = std::mem::replace(&mut self.trace, d.trace.clone());
         self.scope.reopen(&d.locals);
-        self.expand(&b.items, &mut sink);
-        self.pattern_items = outer_pattern;
+        self.within(self.ctx.deferred_items_of(kw), |ev| {
+            ev.expand(&b.items, &mut sink);
+        });
         for _ in &d.locals {
             self.scope.pop();
         }
         self.trace = trace;
-        self.defer_material_blocks = outer;
         let mut toks = sink.toks;
         if let Some(base) = base {
             if modifies(kw, &toks) {

@@ -1,5 +1,6 @@
 //! `normal { }` blocks: a bump pattern with its size, maps and modifiers.
 
+use super::pattern_blocks::pattern_token;
 use super::patterns::{MODIFIERS, PATTERNS};
 use super::texture::{list_len, warp_without_pattern};
 use crate::diag::{codes, Diagnostic};
@@ -44,11 +45,10 @@ impl Evaluator<'_> {
             spec.wave = Some(x.mods.wave);
         }
         while let Some(tok) = c.next() {
-            let tok = self.function_pattern_token(tok);
-            let tok = self.block_pattern_token(tok, c);
+            let (tok, carried) = pattern_token(tok, c);
             let r: R<()> = match tok {
                 Tok::Kw(kw, _) if PATTERNS.contains(&kw) => {
-                    let r = self.pattern_kw(kw, c, &mut spec, false);
+                    let r = self.pattern_kw(kw, carried, c, &mut spec, false);
                     // A new pattern replaces a declared normal's map or image.
                     blend = None;
                     if r.is_ok() && spec.kind.as_ref().is_some_and(PatternKind::is_list) {

@@ -42,32 +42,39 @@ struct ImageSpec {
     source: Option<ImageUse>,
 }
 
-impl Evaluator<'_> {
-    /// A pattern block among a pigment's, normal's or texture's items becomes
-    /// its keyword; its pattern waits in `pending_pattern` for `pattern_kw`
-    /// (as `function { }` does).
-    pub(crate) fn block_pattern_token(&mut self, tok: Tok, c: &mut Cursor) -> Tok {
-        match tok {
-            Tok::Block("object", Value::ObjectPattern(op), span) => {
-                self.pending_pattern = Some(op.0.clone());
-                c.inject(op.1 .0.clone());
-                Tok::Kw("object", span)
-            }
-            Tok::Block(
-                kw @ ("pigment_pattern" | "image_pattern" | "slope"),
-                Value::Pattern(p),
-                span,
-            ) => {
-                self.pending_pattern = Some((*p).clone());
-                Tok::Kw(kw, span)
-            }
-            t => t,
+/// A pattern written as a block among a pigment's, normal's or texture's
+/// items (`function { }`, `pigment_pattern { }`, `image_pattern { }`, `slope
+/// { }`, the object pattern) becomes its keyword, carrying its pattern to
+/// [`Evaluator::pattern_kw`]; the object pattern's entries go back into `c`.
+/// Other tokens carry nothing.
+pub(crate) fn pattern_token(tok: Tok, c: &mut Cursor) -> (Tok, Option<PatternKind>) {
+    match tok {
+        Tok::Block("function", Value::Function(f), span) => {
+            (Tok::Kw("function", span), Some(PatternKind::Function(f)))
         }
+        Tok::Block("object", Value::ObjectPattern(op), span) => {
+            c.inject(op.1 .0.clone());
+            (Tok::Kw("object", span), Some(op.0.clone()))
+        }
+        Tok::Block(
+            kw @ ("pigment_pattern" | "image_pattern" | "slope"),
+            Value::Pattern(p),
+            span,
+        ) => (Tok::Kw(kw, span), Some((*p).clone())),
+        t => (t, None),
     }
+}
 
-    /// The pattern of the block `kw` just met (see [`Self::block_pattern_token`]).
-    pub(crate) fn take_block_pattern(&mut self, kw: &str, c: &mut Cursor) -> R<PatternKind> {
-        match self.pending_pattern.take() {
+impl Evaluator<'_> {
+    /// The pattern of the block `kw` just met, `carried` by its keyword (see
+    /// [`pattern_token`]).
+    pub(crate) fn block_pattern(
+        &mut self,
+        kw: &str,
+        carried: Option<PatternKind>,
+        c: &mut Cursor,
+    ) -> R<PatternKind> {
+        match carried {
             Some(p) => Ok(p),
             // POV-Ray's older `slope DIRECTION [, LO, HI]` without braces
             // (still read by 3.7: advanced/balcony's terrain.inc).

@@ -175,11 +175,14 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    /// Reads the parameters that follow pattern keyword `kw` (already taken); list
-    /// patterns read their entries when `entries` (pigments; not normals).
+    /// Reads the parameters that follow pattern keyword `kw` (already taken,
+    /// with the pattern it `carried` if it was written as a block, see
+    /// [`pattern_token`](super::pattern_blocks::pattern_token)); list patterns
+    /// read their entries when `entries` (pigments; not normals).
     pub(crate) fn pattern_kw(
         &mut self,
         kw: &str,
+        carried: Option<PatternKind>,
         c: &mut Cursor,
         spec: &mut PatternSpec,
         entries: bool,
@@ -216,11 +219,18 @@ impl Evaluator<'_> {
             "ripples" => PatternKind::Ripples,
             "waves" => PatternKind::Waves,
             "bumps" => PatternKind::Bumps,
-            "function" => self.take_function_pattern(c)?,
+            "function" => carried.ok_or_else(|| {
+                Diagnostic::error(
+                    codes::MISSING_VALUE,
+                    c.last,
+                    "the `function` pattern needs its expression in braces",
+                )
+                .with_help("write `function { x*x + y*y }` or `function { F(x, y, z) }`")
+            })?,
             "planar" | "spherical" | "cylindrical" | "boxed" | "quilted" | "spiral1"
             | "spiral2" | "mandel" | "julia" | "magnet" => self.shape_pattern(kw, c)?,
             "pigment_pattern" | "image_pattern" | "slope" | "object" => {
-                self.take_block_pattern(kw, c)?
+                self.block_pattern(kw, carried, c)?
             }
             "average" => PatternKind::Average,
             "density_file" => self.density_file(c)?,

@@ -1,6 +1,7 @@
 //! `pigment { }` blocks: a colour, a pattern with its map or list, or an
 //! image map, with modifiers and transforms.
 
+use super::pattern_blocks::pattern_token;
 use super::patterns::{default_map, PatternSpec, MODIFIERS, PATTERNS};
 use super::texture::warp_without_pattern;
 use crate::diag::{codes, Diagnostic};
@@ -8,7 +9,7 @@ use crate::eval::core::cursor::{Cursor, Tok};
 use crate::eval::core::transforms::TRANSFORMS;
 use crate::eval::core::value::Value;
 use crate::eval::core::{Evaluator, Fail, R};
-use crate::scene::{compose, Colour, Mapped, Pattern, PatternKind, PatternMap, Pigment, Transform};
+use crate::scene::{compose, Mapped, Pattern, PatternKind, PatternMap, Pigment, Transform};
 use std::sync::Arc;
 
 /// What a `pigment { }` accepts (for "did you mean" and help lists).
@@ -49,22 +50,20 @@ impl Evaluator<'_> {
     /// `pigment { COLOUR | PATTERN [entries] [color_map/pigment_map] modifiers |
     /// image_map { … } | Name … transforms }`.
     pub(crate) fn pigment(&mut self, c: &mut Cursor) -> R<Pigment> {
-        let mut pig = if self.density_block {
-            // A media's density is 1 where nothing else is said.
-            Pigment {
-                pattern: Pattern::Solid(Colour::rgb(1.0, 1.0, 1.0)),
-                transform: None,
-            }
-        } else {
-            self.default_texture.pigment.clone()
-        };
+        let start = self.default_texture.pigment.clone();
+        self.pigment_from(start, c)
+    }
+
+    /// A pigment block's items read over `start`, the pigment in force where
+    /// nothing else is said (the default texture's, or a density's 1).
+    pub(crate) fn pigment_from(&mut self, start: Pigment, c: &mut Cursor) -> R<Pigment> {
+        let mut pig = start;
         let mut pattern_given = false;
         let mut spec = self.new_spec();
         let mut modified = false;
         let mut uv_mapping = false;
         while let Some(tok) = c.next() {
-            let tok = self.function_pattern_token(tok);
-            let tok = self.block_pattern_token(tok, c);
+            let (tok, carried) = pattern_token(tok, c);
             let r: R<()> = match tok {
                 Tok::Val(Value::Pigment(p), _) if !pattern_given => {
                     pig = (*p).clone();
@@ -112,7 +111,7 @@ impl Evaluator<'_> {
                         pattern_given = true;
                         modified = true;
                         pig.transform = None;
-                        self.pattern_kw(kw, c, &mut spec, true)
+                        self.pattern_kw(kw, carried, c, &mut spec, true)
                     }
                 }
                 Tok::Kw(kw, _) if MODIFIERS.contains(&kw) => {

@@ -1,6 +1,7 @@
 //! `texture { }` blocks, plain, layered or patterned, `tiles { }` and
 //! `texture_map { }`.
 
+use super::pattern_blocks::pattern_token;
 use super::patterns::{map_entry_value, PatternSpec, MODIFIERS, PATTERNS};
 use super::pigment::uv_mapped;
 use crate::diag::{codes, Diagnostic};
@@ -8,7 +9,9 @@ use crate::eval::core::cursor::{Cursor, Tok};
 use crate::eval::core::transforms::TRANSFORMS;
 use crate::eval::core::value::Value;
 use crate::eval::core::{Evaluator, Fail, R};
-use crate::scene::{PatternedTexture, Texture, TextureEntries, TextureMapEntries, Transform};
+use crate::scene::{
+    PatternKind, PatternedTexture, Texture, TextureEntries, TextureMapEntries, Transform,
+};
 use crate::span::Span;
 use std::sync::Arc;
 
@@ -196,8 +199,7 @@ impl Evaluator<'_> {
         let mut pat: Option<TexturePatternSpec> = None;
         let mut uv_mapping: Option<Span> = None;
         while let Some(tok) = c.next() {
-            let tok = self.function_pattern_token(tok);
-            let tok = self.block_pattern_token(tok, c);
+            let (tok, carried) = pattern_token(tok, c);
             // `pigment { … }`, `finish { … }`, `normal { … }` modify the texture's own.
             let tok = match tok {
                 Tok::Deferred(b) => {
@@ -246,7 +248,7 @@ impl Evaluator<'_> {
                     Ok(())
                 }
                 Tok::Kw(kw, span) if PATTERNS.contains(&kw) => {
-                    self.texture_pattern(kw, span, c, &mut pat, plain_items)
+                    self.texture_pattern(kw, span, carried, c, &mut pat, plain_items)
                 }
                 Tok::Kw(kw, span) if MODIFIERS.contains(&kw) && pat.is_some() => {
                     let spec = &mut pat.as_mut().expect("checked").spec;
@@ -399,6 +401,7 @@ impl Evaluator<'_> {
         &mut self,
         kw: &'static str,
         span: Span,
+        carried: Option<PatternKind>,
         c: &mut Cursor,
         pat: &mut Option<TexturePatternSpec>,
         has_own_items: bool,
@@ -430,7 +433,7 @@ impl Evaluator<'_> {
         // The pattern and its textures are read even after a conflict, so they are
         // not reported again as out of place.
         let mut spec = self.new_spec();
-        let r = self.pattern_kw(kw, c, &mut spec, false);
+        let r = self.pattern_kw(kw, carried, c, &mut spec, false);
         let mut p = TexturePatternSpec {
             keyword: kw,
             span,

@@ -2,8 +2,8 @@
 //! `superellipsoid { <E, N> }`.
 //!
 //! A `sphere` or `cylinder` block written directly in a blob is a component, not
-//! an object: [`Evaluator::blob_items`] tells [`Evaluator::block`] so while the
-//! blob's items are read, and the component comes back as an object whose shape
+//! an object: the context the blob's items are read in (`core/context.rs`)
+//! tells [`Evaluator::block`] so, and the component comes back as an object whose shape
 //! is a blob of that one component (its transforms and texture in the
 //! component's own fields), which the blob then takes apart.
 

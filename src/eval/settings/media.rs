@@ -5,7 +5,7 @@ use crate::eval::core::cursor::{Cursor, Tok};
 use crate::eval::core::transforms::TRANSFORMS;
 use crate::eval::core::value::Value;
 use crate::eval::core::{Evaluator, Fail, R};
-use crate::scene::{Media, Pigment, Scattering, ScatteringKind};
+use crate::scene::{Colour, Media, Pattern, Pigment, Scattering, ScatteringKind};
 use crate::span::Span;
 
 /// What a `media { }` accepts.
@@ -292,10 +292,12 @@ impl Evaluator<'_> {
     /// default colour map, as in a pigment (measured: `bozo` is white, green,
     /// blue and red).
     pub(crate) fn density(&mut self, c: &mut Cursor) -> R<Pigment> {
-        let outer = std::mem::replace(&mut self.density_block, true);
-        let r = self.pigment(c);
-        self.density_block = outer;
-        r
+        // A media's density is 1 where nothing else is said.
+        let one = Pigment {
+            pattern: Pattern::Solid(Colour::rgb(1.0, 1.0, 1.0)),
+            transform: None,
+        };
+        self.pigment_from(one, c)
     }
 
     /// The next value as a whole number (a float with no fraction).
