@@ -11,6 +11,7 @@ pub mod files;
 pub mod ide;
 pub mod memory;
 pub mod output;
+pub mod pattern;
 pub mod render;
 pub mod scene;
 pub mod source;

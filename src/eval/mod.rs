@@ -25,7 +25,6 @@
 
 mod animation;
 mod core;
-pub mod function;
 mod materials;
 mod objects;
 mod settings;
@@ -38,8 +37,8 @@ pub use self::core::include::{
 pub use self::core::value::Value;
 pub use self::core::vocabulary::{block_keywords, TOP_LEVEL_KEYWORDS};
 pub use self::core::{file_io, value};
+pub use crate::scene::{Spline, SplineKind};
 pub use animation::keyframe::{ease, Easing};
-pub use animation::spline::{Spline, SplineKind};
 
 use self::core::Evaluator;
 

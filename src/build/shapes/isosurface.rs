@@ -9,7 +9,7 @@
 //! where the container's surface is inside, it shows (unless `open`).
 
 use crate::build::Ray;
-use crate::eval::function::Function;
+use crate::scene::Function;
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -258,7 +258,7 @@ impl Isosurface {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::eval::function::{Body, Op};
+    use crate::scene::function::{Body, Op};
 
     fn sphere_fn() -> Arc<Function> {
         // sqrt(x*x + y*y + z*z) - 1

@@ -20,11 +20,11 @@
 //! would). That walk depends only on the time, so every frame and shard agrees.
 
 use super::keyframe::Keyframes;
-use super::spline::Spline;
 use crate::diag::{codes, Diagnostic};
 use crate::eval::core::cursor::{Cursor, Sink};
 use crate::eval::core::value::{CameraSpec, Value};
 use crate::eval::core::{Evaluator, Fail, R};
+use crate::scene::Spline;
 use crate::syntax::ast::{Block, Item};
 use glam::DVec3;
 use std::rc::Rc;

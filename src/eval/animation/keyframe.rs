@@ -13,11 +13,11 @@
 //! }
 //! ```
 
-use super::spline::{hermite, Spline, SplineKind};
 use crate::diag::{codes, Diagnostic};
 use crate::eval::core::cursor::{Cursor, Tok};
 use crate::eval::core::value::{colour_from_array, colour_to_array, Value, Vector};
 use crate::eval::core::{Evaluator, R};
+use crate::scene::spline::{hermite, Spline, SplineKind};
 use crate::span::Span;
 
 /// How time runs within one piece between two keys.

@@ -331,7 +331,7 @@ impl Evaluator<'_> {
                 let p = self.to_vec3(&args[3].0, args[3].1)?;
                 let octaves = octaves.clamp(1.0, 10.0) as u32;
                 Ok(Value::Vector(Vector::v3(
-                    crate::render::pigment::noise::turbulence_vec(p, octaves, omega, lambda),
+                    crate::pattern::noise::turbulence_vec(p, octaves, omega, lambda),
                 )))
             }
             "vlength" => {

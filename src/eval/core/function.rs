@@ -1,5 +1,5 @@
 //! `function { EXPR }` and `function(a, b) { EXPR }`: compiling the body to a
-//! [`Program`](crate::eval::function::program) once, when the function is declared.
+//! [`Function`](crate::scene::Function) program once, when the function is declared.
 //!
 //! Parts of the body that do not depend on the parameters (declared floats,
 //! `pi`, `V.x`, macro calls, calls of other functions with constant arguments)
@@ -10,7 +10,7 @@
 use super::value::Value;
 use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
-use crate::eval::function::program::{max_depth, Body, Function, Op, MAX_CALL_DEPTH, MAX_STACK};
+use crate::scene::function::{max_depth, Body, Function, Op, MAX_CALL_DEPTH, MAX_STACK};
 use crate::span::Span;
 use crate::syntax::ast::{Arg, BinOp, Block, Expr, ExprKind, Item, Keyword, UnOp};
 use crate::syntax::Sym;
@@ -251,7 +251,7 @@ impl Evaluator<'_> {
             .is_some_and(|r| r.starts_with(|c: char| c.is_ascii_lowercase()));
         k.name == "internal"
             && pov_name
-            && !crate::eval::function::internal::INTERNALS
+            && !crate::pattern::internal::INTERNALS
                 .iter()
                 .any(|(m, _, _)| *m == &*n)
             && matches!(self.expr(e), Ok(Value::Float(_)))
@@ -266,7 +266,7 @@ impl Evaluator<'_> {
         let v = self.expr(e)?;
         let name = match (&v, self.ctx.declaring_function) {
             (Value::Float(_), Some(declared))
-                if crate::eval::function::internal::INTERNALS
+                if crate::pattern::internal::INTERNALS
                     .iter()
                     .any(|(m, _, _)| *m == &*declared.name()) =>
             {
@@ -289,7 +289,7 @@ impl Evaluator<'_> {
             }
             _ => self.to_str(&v, e.span)?,
         };
-        let Some(&(_, n, f)) = crate::eval::function::internal::INTERNALS
+        let Some(&(_, n, f)) = crate::pattern::internal::INTERNALS
             .iter()
             .find(|(m, _, _)| *m == &*name)
         else {
@@ -301,7 +301,7 @@ impl Evaluator<'_> {
             .with_help_opt(
                 crate::diag::did_you_mean(
                     &name,
-                    crate::eval::function::internal::INTERNALS
+                    crate::pattern::internal::INTERNALS
                         .iter()
                         .map(|(m, _, _)| *m),
                 )
@@ -742,7 +742,7 @@ impl Evaluator<'_> {
             }
         }
         Ok(if let Body::Spline(s) = &f.body {
-            s.value_at(vals[0])
+            crate::eval::animation::spline::spline_value(s, vals[0])
         } else if f.is_colour() {
             Value::Colour(super::value::colour_from_array(f.colour(&vals)))
         } else {

@@ -198,9 +198,9 @@ pub enum Value {
     /// A macro.
     Macro(Rc<MacroDef>),
     /// A `spline { }`, called as `S(t)`.
-    Spline(Rc<crate::eval::animation::spline::Spline>),
+    Spline(Rc<crate::scene::Spline>),
     /// A `function { }`, called as `F(x, y, z)`.
-    Function(Arc<crate::eval::function::Function>),
+    Function(Arc<crate::scene::Function>),
     /// A file opened by `#fopen`.
     File(Rc<std::cell::RefCell<super::file_io::OpenFile>>),
     /// A `warp { … }` (only meaningful inside a pattern).

@@ -24,7 +24,7 @@ pub(crate) const ISOSURFACE_ITEMS: &[&str] = &[
 
 /// An isosurface being read.
 pub(crate) struct IsoSpec {
-    function: Option<(Arc<crate::eval::function::Function>, Span)>,
+    function: Option<(Arc<crate::scene::Function>, Span)>,
     container: Container,
     threshold: f64,
     accuracy: f64,

@@ -1,18 +1,8 @@
 //! Pigment and normal evaluation: patterns, colour and pigment maps, image maps,
 //! bump perturbation, and the textures a patterned texture chooses.
 
-mod fractals;
-mod image_map;
-pub mod noise;
-mod normal_blend;
-pub mod patterns;
-mod shapes;
-pub mod slope;
-pub mod texture_map;
-pub mod warps;
-
-use normal_blend::perturb_blend;
-pub use texture_map::{for_each_plain, plain_at};
+use super::normal_blend::perturb_blend;
+use super::{image_map, patterns};
 
 use crate::scene::{Colour, Mapped, Normal, Pattern, PatternKind, PatternMap, Pigment};
 use glam::{DMat4, DVec2, DVec3};

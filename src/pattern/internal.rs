@@ -3,7 +3,7 @@
 //! checked against POV-Ray's values (the noise-based ones use rts's own noise, so
 //! their values differ in detail). Arguments: x, y, z, then the parameters.
 
-use crate::render::pigment::noise::{noise, signed_noise};
+use super::noise::{noise, signed_noise};
 use glam::DVec3;
 
 /// A built-in function of its arguments.
