@@ -30,7 +30,6 @@ mod objects;
 mod settings;
 
 pub use self::core::budget::Interrupt;
-pub use self::core::builtins::{is_function as is_builtin_function, BUILTIN_NAMES};
 pub use self::core::include::{
     find_include, load_file, load_file_limited, search_dirs, LoadError, MAX_SOURCE_SIZE, STDLIB,
 };
@@ -38,6 +37,7 @@ pub use self::core::value::Value;
 pub use self::core::vocabulary::{block_keywords, TOP_LEVEL_KEYWORDS};
 pub use self::core::{file_io, value};
 pub use crate::scene::{Spline, SplineKind};
+pub use crate::syntax::builtins::{is_function as is_builtin_function, BUILTIN_NAMES};
 pub use animation::keyframe::{ease, Easing};
 
 use self::core::Evaluator;

@@ -265,7 +265,7 @@ impl Evaluator<'_> {
         }
         if name.is_builtin() {
             let i = name.0 as usize;
-            if builtins::is_function(i) {
+            if crate::syntax::builtins::is_function(i) {
                 return Err(Diagnostic::error(
                     codes::TYPE_MISMATCH,
                     span,
@@ -322,7 +322,7 @@ impl Evaluator<'_> {
         let cands = names
             .iter()
             .map(|s| &**s)
-            .chain(builtins::BUILTIN_NAMES.iter().copied())
+            .chain(crate::syntax::builtins::BUILTIN_NAMES.iter().copied())
             .chain(keywords.iter().copied());
         // A functions.inc-like name is "not implemented" unless it looks like
         // a misspelt name the scene declared.

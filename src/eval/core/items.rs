@@ -1,6 +1,5 @@
 //! Expanding items into evaluated [`Tok`]s, placing them in the scene, and macros.
 
-use super::builtins;
 use super::cursor::{Sink, Tok};
 use super::value::Value;
 use super::{Evaluator, Fail, R};
@@ -382,8 +381,8 @@ impl Evaluator<'_> {
         args: &[Arg],
         span: Span,
     ) -> R<Value> {
-        if name.is_builtin() && builtins::is_function(name.0 as usize) {
-            match builtins::BUILTIN_NAMES[name.0 as usize] {
+        if name.is_builtin() && crate::syntax::builtins::is_function(name.0 as usize) {
+            match crate::syntax::builtins::BUILTIN_NAMES[name.0 as usize] {
                 "defined" => return self.defined(args, span),
                 "trace" => return self.trace_call(args, span),
                 _ => {}
@@ -469,7 +468,8 @@ impl Evaluator<'_> {
                     .map(Sym::name)
                     .collect();
                 let cands = names.iter().map(|s| &**s).chain(
-                    builtins::BUILTIN_NAMES[builtins::CONSTANT_COUNT..]
+                    crate::syntax::builtins::BUILTIN_NAMES
+                        [crate::syntax::builtins::CONSTANT_COUNT..]
                         .iter()
                         .copied(),
                 );
