@@ -11,6 +11,8 @@ mod blob;
 mod camera;
 mod density;
 pub mod function;
+mod isosurface;
+mod julia;
 mod light;
 mod material;
 mod media;
@@ -20,6 +22,7 @@ mod photons;
 mod picture;
 mod radiosity;
 pub mod spline;
+mod sweep;
 mod transform;
 mod warp;
 
@@ -29,6 +32,8 @@ pub use blob::{BlobComponent, BlobData, BlobKind};
 pub use camera::{Camera, CameraFace, CameraKind, CameraMesh, MeshCamera, UvGrid};
 pub use density::{DensityGrid, DF3_MAX_VOXELS};
 pub use function::Function;
+pub use isosurface::{Container, Isosurface};
+pub use julia::{Algebra, Julia, JuliaFn};
 pub use light::{AreaLight, Beam, Light, LightKind};
 pub use material::{
     compose, Colour, Finish, ImageMap, InsideTest, Interior, Irid, Mapped, Normal, Pattern,
@@ -43,6 +48,7 @@ pub use photons::{LightPhotons, ObjectPhotons, PhotonDensity, Photons, PhotonsBl
 pub use picture::{srgb_to_linear, Depth, Palette, Picture, Samples, Texel, Tones, Transfer};
 pub use radiosity::{Radiosity, RadiosityBlock};
 pub use spline::{Spline, SplineKind};
+pub use sweep::{SweepData, SweepSpline};
 pub use transform::Transform;
 pub use warp::{Fractal, FractalKind, MappingWarp, Warp, WarpStep};
 

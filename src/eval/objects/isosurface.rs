@@ -1,12 +1,11 @@
 //! `isosurface { function { … } contained_by { … } threshold accuracy
 //! max_gradient evaluate open all_intersections max_trace … }`.
 
-use crate::build::shapes::isosurface::{Container, Isosurface};
 use crate::diag::{codes, Diagnostic};
 use crate::eval::core::cursor::{Cursor, Tok};
 use crate::eval::core::value::Value;
 use crate::eval::core::{Evaluator, Fail, R};
-use crate::scene::Shape;
+use crate::scene::{Container, Isosurface, Shape};
 use crate::span::Span;
 use glam::DVec3;
 use std::sync::Arc;

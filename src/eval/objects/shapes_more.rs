@@ -1,13 +1,11 @@
 //! `bicubic_patch`, `julia_fractal` and `sphere_sweep`.
 
 use crate::build::shapes::bicubic;
-use crate::build::shapes::julia::{Algebra, Julia, JuliaFn};
-use crate::build::shapes::sweep::{SphereSweep, SweepSpline};
 use crate::diag::{codes, Diagnostic};
 use crate::eval::core::cursor::{Cursor, Tok};
 use crate::eval::core::value::Value;
 use crate::eval::core::{Evaluator, Fail, R};
-use crate::scene::{Object, Shape};
+use crate::scene::{Algebra, Julia, JuliaFn, Object, Shape, SweepData, SweepSpline};
 use crate::span::Span;
 use glam::{DVec2, DVec3, DVec4};
 use std::sync::Arc;
@@ -382,9 +380,13 @@ impl Evaluator<'_> {
                 return Err(self.bad_size(ts, "tolerance", tolerance));
             }
         }
-        match SphereSweep::new(spline, &points, tolerance) {
-            Some(s) => Ok(Shape::SphereSweep(Arc::new(s))),
-            None => Err(Fail::silent()),
+        if points.len() < spline.min_points() {
+            return Err(Fail::silent());
         }
+        Ok(Shape::SphereSweep(Arc::new(SweepData {
+            spline,
+            points,
+            tolerance,
+        })))
     }
 }
