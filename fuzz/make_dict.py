@@ -5,7 +5,7 @@ sources that define it, so it never needs editing by hand:
 - every word the grammar (grammar/rts.pest) spells out, and its punctuation;
 - directives: `#` before the words of the grammar's kw_* and *_kind rules;
 - the reserved keywords (src/syntax/keywords.rs) and built-in names
-  (src/eval/builtins.rs);
+  (src/syntax/builtins.rs);
 - every keyword the evaluator matches (`Kw("…")` in src/eval);
 - the standard include files (src/stdlib/*.inc) and the fuzz assets
   (fuzz/assets/*), quoted as a scene names them.
@@ -54,7 +54,7 @@ def main():
             elif len(lit) <= 3:
                 punct.add(lit)
     words.update(const_list(ROOT / "src/syntax/keywords.rs", "KEYWORDS"))
-    words.update(const_list(ROOT / "src/eval/builtins.rs", "BUILTIN_NAMES"))
+    words.update(const_list(ROOT / "src/syntax/builtins.rs", "BUILTIN_NAMES"))
     for path in sorted((ROOT / "src/eval").rglob("*.rs")):
         words.update(re.findall(r'Kw\("([a-z_0-9]+)"', path.read_text()))
     files = ['"%s"' % p.name for p in sorted((ROOT / "src/stdlib").glob("*.inc"))]

@@ -2,7 +2,10 @@
 //!
 //! The modules follow the pipeline:
 //! `source → syntax::parse → AST → eval::eval → scene → build::build → render::render → output::write`;
-//! `files` (reading and writing files safely) serves them all and imports none.
+//! `scene` is plain data, `pattern` the runtime code (patterns, pigments, functions at a
+//! point) that `eval`, `build` and `render` share, and no stage imports a later one
+//! (`tests/layout.rs`); `files` (reading and writing files safely) serves them all and
+//! imports none.
 
 pub mod build;
 pub mod diag;
@@ -11,6 +14,7 @@ pub mod files;
 pub mod ide;
 pub mod memory;
 pub mod output;
+pub mod pattern;
 pub mod render;
 pub mod scene;
 pub mod source;

@@ -13,9 +13,9 @@ use proptest::test_runner::{Config, RngSeed};
 use render_support::*;
 use rts::build::shapes::bicubic;
 use rts::build::shapes::julia::{Algebra, Julia, JuliaFn};
-use rts::build::shapes::sweep::{SphereSweep, SweepSpline};
+use rts::build::shapes::sweep::SweepSpline;
 use rts::build::{build, Ray, RayKind, World};
-use rts::scene::{Camera, Object, Shape, Transform};
+use rts::scene::{Camera, Object, Shape, SweepData, Transform};
 use std::sync::Arc;
 
 fn config(cases: u32) -> Config {
@@ -50,8 +50,11 @@ fn unit_ball_julia() -> Object {
 }
 
 fn capsule_sweep(a: DVec3, b: DVec3, r: f64) -> Object {
-    let s = SphereSweep::new(SweepSpline::Linear, &[(a, r), (b, r)], 1e-6).expect("2 points");
-    object(Shape::SphereSweep(Arc::new(s)))
+    object(Shape::SphereSweep(Arc::new(SweepData {
+        spline: SweepSpline::Linear,
+        points: vec![(a, r), (b, r)],
+        tolerance: 1e-6,
+    })))
 }
 
 fn capsule_csg(a: DVec3, b: DVec3, r: f64) -> Vec<Object> {

@@ -597,7 +597,12 @@ impl Builder {
             }
             Shape::Isosurface(i) => PrimShape::Isosurface(i.clone()),
             Shape::Julia(j) => PrimShape::Julia(j.clone()),
-            Shape::SphereSweep(s) => PrimShape::SphereSweep(s.clone()),
+            Shape::SphereSweep(s) => {
+                match shapes::sweep::SphereSweep::new(s.spline, &s.points, s.tolerance) {
+                    Some(s) => PrimShape::SphereSweep(Arc::new(s)),
+                    None => empty(),
+                }
+            }
             Shape::Union { .. } | Shape::Csg { .. } | Shape::Text(_) => empty(),
         };
         (shape, world_from_obj)

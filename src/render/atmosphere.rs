@@ -1,9 +1,9 @@
 //! What a ray meets besides objects: the sky sphere behind everything, and
 //! rainbows and fog along the way, as POV-Ray 3.7 defines them.
 
-use super::pigment;
-use super::pigment::noise;
 use crate::build::{Ray, World};
+use crate::pattern;
+use crate::pattern::noise;
 use crate::scene::{Atmosphere, Fog, FogKind, FogTurbulence, Rainbow};
 use glam::DVec3;
 
@@ -21,7 +21,7 @@ pub fn sky(world: &World, dir: DVec3) -> DVec3 {
             d = t.inverse.transform_vector3(d).normalize();
         }
         for pig in &sky.pigments {
-            let c = pigment::evaluate(pig, d);
+            let c = pattern::evaluate(pig, d);
             out = c.rgb * (1.0 - c.filter - c.transmit) + out * (c.transmit + c.filter * c.rgb);
         }
     }
@@ -106,7 +106,7 @@ fn rainbow_colour(rb: &Rainbow, dir: DVec3) -> Option<crate::scene::Colour> {
     if !(0.0..=1.0).contains(&index) {
         return None;
     }
-    let mut c = pigment::colour_at(&rb.colour_map, index);
+    let mut c = pattern::colour_at(&rb.colour_map, index);
     if rb.falloff_angle < 360.0 {
         // `up` and `direction` are perpendicular unit vectors (see `Rainbow`).
         let right = rb.up.cross(rb.direction);

@@ -29,7 +29,7 @@ pub fn primary_ray(
     let sy = 0.5 - y / f64::from(height);
     let (origin, dir) = pinhole(camera, sx, sy)?;
     let dir = match &camera.normal {
-        Some(n) => super::pigment::perturb_camera_ray(n, dir.normalize(), sx, sy),
+        Some(n) => crate::pattern::perturb_camera_ray(n, dir.normalize(), sx, sy),
         None => dir.normalize(),
     };
     if camera.aperture <= 0.0 || camera.kind == CameraKind::Orthographic {

@@ -5,7 +5,7 @@
 //! `irid_wavelength`): a film of thickness 0.36, 0.26 and 0.24 seen and lit
 //! head-on brings red, green and blue back to their start.
 
-use super::pigment::noise::turbulence;
+use crate::pattern::noise::turbulence;
 use crate::scene::Finish;
 use glam::DVec3;
 use std::f64::consts::PI;

@@ -732,7 +732,7 @@ fn distance(a: DVec3, b: DVec3) -> f64 {
 pub fn density(m: &Media, p: DVec3) -> DVec3 {
     let mut d = DVec3::ONE;
     for pig in &m.density {
-        d *= super::pigment::evaluate(pig, p).rgb;
+        d *= crate::pattern::evaluate(pig, p).rgb;
         if d == DVec3::ZERO {
             break;
         }

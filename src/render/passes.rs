@@ -4,8 +4,8 @@
 //! passes `depth` and `normal` go to the file without gamma encoding; `albedo` is a
 //! colour in the scene's working space like the full picture).
 
-use super::pigment;
 use crate::build::{Ray, RayKind, World};
+use crate::pattern;
 use glam::DVec3;
 
 /// Which picture [`super::render_with`] makes.
@@ -62,13 +62,13 @@ pub fn sample(world: &World, ray: &Ray, pass: Pass, max_depth: f64) -> DVec3 {
                 .texture_from_world
                 .map_or(s.p, |m| m.transform_point3(s.p));
             if s.texture.patterned.is_none() {
-                return pigment::evaluate(&s.texture.pigment, tp).rgb;
+                return pattern::evaluate(&s.texture.pigment, tp).rgb;
             }
             // A patterned texture: its textures' pigments, averaged by weight.
             let mut albedo = DVec3::ZERO;
-            pigment::slope::set_surface_normal_facing(s.normal, ray.dir);
-            pigment::for_each_plain(s.texture, tp, 1.0, &mut |t, w| {
-                albedo += w * pigment::evaluate(&t.pigment, tp).rgb
+            pattern::slope::set_surface_normal_facing(s.normal, ray.dir);
+            pattern::for_each_plain(s.texture, tp, 1.0, &mut |t, w| {
+                albedo += w * pattern::evaluate(&t.pigment, tp).rgb
             });
             albedo
         }

@@ -4,10 +4,10 @@
 use super::atmosphere;
 use super::lights;
 use super::media::{self, MediaPath};
-use super::pigment;
 use super::sampler::Sampler;
 use super::stats::RayStats;
 use crate::build::{Ray, RayKind, SurfaceHit, World};
+use crate::pattern;
 use crate::scene::{Finish, Interior, Reflection, Texture};
 use glam::DVec3;
 
@@ -184,7 +184,7 @@ fn shade(
     weight: f64,
     ctx: &mut TraceCtx,
 ) -> DVec3 {
-    pigment::slope::set_surface_normal_facing(s.normal, ray.dir);
+    pattern::slope::set_surface_normal_facing(s.normal, ray.dir);
     // `interior_texture`: seen from inside the surface (the ray leaving
     // through it), as POV-Ray shades it.
     if let Some(inside) = &s.texture.interior_texture {
@@ -232,16 +232,16 @@ fn shade_texture(
     let (p, geo_n) = (s.p, s.geo_normal);
     let tp = s.texture_from_world.map_or(p, |m| m.transform_point3(p));
     if let Some(pt) = &tex.patterned {
-        return match pigment::texture_map::choose(pt, tp) {
-            pigment::texture_map::Choice::One(t) => {
+        return match pattern::texture_map::choose(pt, tp) {
+            pattern::texture_map::Choice::One(t) => {
                 shade_texture(world, s, t, ray, level, weight, ctx)
             }
-            pigment::texture_map::Choice::Blend(a, b, t) => {
+            pattern::texture_map::Choice::Blend(a, b, t) => {
                 let ca = shade_texture(world, s, a, ray, level, weight * (1.0 - t), ctx);
                 let cb = shade_texture(world, s, b, ray, level, weight * t, ctx);
                 ca * (1.0 - t) + cb * t
             }
-            pigment::texture_map::Choice::Average(entries) => {
+            pattern::texture_map::Choice::Average(entries) => {
                 let total: f64 = entries.iter().map(|(w, _)| *w).sum();
                 if total == 0.0 {
                     return DVec3::ZERO;
@@ -276,9 +276,9 @@ fn shade_texture(
     // The photons' light, likewise.
     let mut caustic: Option<DVec3> = None;
     for tex in layers(tex) {
-        let c = pigment::evaluate_uv(&tex.pigment, tp, s.uv);
+        let c = pattern::evaluate_uv(&tex.pigment, tp, s.uv);
         let n = match &tex.normal {
-            Some(nrm) => pigment::perturb(nrm, facing(s.normal), p, s.texture_from_world),
+            Some(nrm) => pattern::perturb(nrm, facing(s.normal), p, s.texture_from_world),
             None => facing(s.normal),
         };
         last_n = n;
@@ -695,7 +695,7 @@ fn caustic_gain(s: &SurfaceHit, dir: DVec3, power: f64) -> f64 {
         layers(s.texture)
             .find_map(|t| t.normal.as_ref())
             .map_or(toward, |nrm| {
-                pigment::perturb(nrm, toward, s.p, s.texture_from_world)
+                pattern::perturb(nrm, toward, s.p, s.texture_from_world)
             })
     } else {
         toward
@@ -762,7 +762,7 @@ pub(super) fn surface_filter(s: &SurfaceHit) -> DVec3 {
                 None => (s.texture, s.texture_from_world),
             };
             let tp = m.map_or(s.p, |m| m.transform_point3(s.p));
-            pigment::for_each_plain(tex, tp, w, &mut |t, w| {
+            pattern::for_each_plain(tex, tp, w, &mut |t, w| {
                 sum += w * layers_filter(t, tp, s.uv);
             });
         }
@@ -771,7 +771,7 @@ pub(super) fn surface_filter(s: &SurfaceHit) -> DVec3 {
         // The filters of the textures the pattern shows here, averaged by
         // their blend weights.
         let mut sum = DVec3::ZERO;
-        pigment::for_each_plain(s.texture, tp, 1.0, &mut |t, w| {
+        pattern::for_each_plain(s.texture, tp, 1.0, &mut |t, w| {
             sum += w * layers_filter(t, tp, s.uv);
         });
         sum
@@ -784,7 +784,7 @@ pub(super) fn surface_filter(s: &SurfaceHit) -> DVec3 {
 /// `tex` at `tp`: what passes through it.
 fn layers_filter(tex: &Texture, tp: DVec3, uv: Option<glam::DVec2>) -> DVec3 {
     layers(tex).fold(DVec3::ONE, |through, t| {
-        let c = pigment::evaluate_uv(&t.pigment, tp, uv);
+        let c = pattern::evaluate_uv(&t.pigment, tp, uv);
         through * (c.filter * c.rgb + DVec3::splat(c.transmit))
     })
 }

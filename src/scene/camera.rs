@@ -89,7 +89,7 @@ pub struct Camera {
     /// projection (see [`MeshCamera`]).
     pub mesh: Option<std::sync::Arc<MeshCamera>>,
     /// `normal { … }`: perturbs every camera ray's direction (see
-    /// `render::pigment::perturb_camera_ray`).
+    /// `pattern::perturb_camera_ray`).
     pub normal: Option<std::sync::Arc<super::Normal>>,
     /// Where the camera was written (default span for the default camera).
     pub span: Span,

@@ -76,7 +76,7 @@ pub type TextureMapEntries = Arc<Vec<(f64, Arc<Texture>)>>;
 #[derive(Clone, Debug, PartialEq)]
 pub enum TextureEntries {
     /// `texture_map { [v TEXTURE] … }`, in the order written (POV-Ray does not
-    /// sort texture maps; see `render::pigment::map_lookup`).
+    /// sort texture maps; see `pattern::texture_map::map_lookup`).
     Map(TextureMapEntries),
     /// The textures of a list pattern (`checker`: 2, `hexagon`: 3, `brick`: 2).
     List(Vec<Arc<Texture>>),
@@ -283,7 +283,7 @@ pub enum PatternKind {
     Dents,
     /// `function { … }`: a user function of x, y, z (wrapped into [0, 1] like
     /// `gradient`, as POV-Ray does).
-    Function(Arc<crate::eval::function::Function>),
+    Function(Arc<super::Function>),
     // --- Geometric, quilted, spiral and fractal patterns (one group) ---
     /// `planar`: 1 on the x-z plane, down to 0 at distance 1.
     Planar,

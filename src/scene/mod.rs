@@ -10,6 +10,9 @@ mod atmosphere;
 mod blob;
 mod camera;
 mod density;
+pub mod function;
+mod isosurface;
+mod julia;
 mod light;
 mod material;
 mod media;
@@ -18,6 +21,8 @@ mod path;
 mod photons;
 mod picture;
 mod radiosity;
+pub mod spline;
+mod sweep;
 mod transform;
 mod warp;
 
@@ -26,6 +31,9 @@ pub use atmosphere::{Atmosphere, Fog, FogKind, FogTurbulence, Rainbow, SkySphere
 pub use blob::{BlobComponent, BlobData, BlobKind};
 pub use camera::{Camera, CameraFace, CameraKind, CameraMesh, MeshCamera, UvGrid};
 pub use density::{DensityGrid, DF3_MAX_VOXELS};
+pub use function::Function;
+pub use isosurface::{Container, Isosurface};
+pub use julia::{Algebra, Julia, JuliaFn};
 pub use light::{AreaLight, Beam, Light, LightKind};
 pub use material::{
     compose, Colour, Finish, ImageMap, InsideTest, Interior, Irid, Mapped, Normal, Pattern,
@@ -39,6 +47,8 @@ pub use path::{PathTracing, PixelFilter};
 pub use photons::{LightPhotons, ObjectPhotons, PhotonDensity, Photons, PhotonsBlock};
 pub use picture::{srgb_to_linear, Depth, Palette, Picture, Samples, Texel, Tones, Transfer};
 pub use radiosity::{Radiosity, RadiosityBlock};
+pub use spline::{Spline, SplineKind};
+pub use sweep::{SweepData, SweepSpline};
 pub use transform::Transform;
 pub use warp::{Fractal, FractalKind, MappingWarp, Warp, WarpStep};
 

@@ -254,11 +254,11 @@ pub enum Shape {
         n: f64,
     },
     /// `isosurface { function { … } contained_by { … } … }`.
-    Isosurface(Arc<crate::build::shapes::isosurface::Isosurface>),
+    Isosurface(Arc<super::Isosurface>),
     /// `julia_fractal { <c> … }`: a slice of a 4D Julia set.
-    Julia(Arc<crate::build::shapes::julia::Julia>),
+    Julia(Arc<super::Julia>),
     /// `sphere_sweep { SPLINE N, <p>, r … }`.
-    SphereSweep(Arc<crate::build::shapes::sweep::SphereSweep>),
+    SphereSweep(Arc<super::SweepData>),
     /// `merge`, `intersection` or `difference` (a `union` is [`Shape::Union`]).
     Csg {
         /// Which operation.

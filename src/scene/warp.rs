@@ -1,6 +1,6 @@
 //! `warp { … }` in patterns, and the parameters of the fractal patterns
 //! (`mandel`, `julia`, `magnet`): plain descriptions, evaluated by
-//! `render::pigment::warps` and `render::pigment::fractals`.
+//! `pattern::warps` and `pattern::fractals`.
 
 use glam::{DMat4, DVec2, DVec3};
 

@@ -1,7 +1,7 @@
 //! Interned identifiers: names are stored once and compared as integers.
 //!
 //! The built-in function and constant names are interned first, in the order of
-//! [`crate::eval::BUILTIN_NAMES`], so a symbol below that list's length *is* a
+//! [`super::builtins::BUILTIN_NAMES`], so a symbol below that list's length *is* a
 //! built-in and its number indexes the list.
 
 use std::collections::HashMap;
@@ -21,7 +21,7 @@ fn interner() -> &'static Mutex<Interner> {
     static INTERNER: OnceLock<Mutex<Interner>> = OnceLock::new();
     INTERNER.get_or_init(|| {
         let mut i = Interner::default();
-        for name in crate::eval::BUILTIN_NAMES {
+        for name in super::builtins::BUILTIN_NAMES {
             i.intern(name);
         }
         Mutex::new(i)
@@ -58,7 +58,7 @@ impl Sym {
 
     /// Whether this is a built-in function or constant.
     pub fn is_builtin(self) -> bool {
-        (self.0 as usize) < crate::eval::BUILTIN_NAMES.len()
+        (self.0 as usize) < super::builtins::BUILTIN_NAMES.len()
     }
 }
 

@@ -5,6 +5,7 @@
 //! starts at column 0, so several independent syntax errors are reported in one run.
 
 pub mod ast;
+pub mod builtins;
 pub mod data;
 pub mod intern;
 pub mod keywords;

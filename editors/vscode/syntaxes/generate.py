@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes rts.tmLanguage.json from the language's word lists in the Rust sources
-(src/syntax/keywords.rs: reserved keywords; src/eval/builtins.rs: built-in constants
+(src/syntax/keywords.rs: reserved keywords; src/syntax/builtins.rs: built-in constants
 and functions). Run it after adding keywords: `python3 editors/vscode/syntaxes/generate.py`.
 tests/lsp.rs checks the grammar knows every word."""
 import json
@@ -9,10 +9,10 @@ import re
 
 root = pathlib.Path(__file__).resolve().parents[3]
 kw = re.findall(r'^    "([a-z_0-9]+)",', (root / "src/syntax/keywords.rs").read_text(), re.M)
-b = (root / "src/eval/builtins.rs").read_text()
+b = (root / "src/syntax/builtins.rs").read_text()
 b = b[b.index("BUILTIN_NAMES"):b.index("];", b.index("BUILTIN_NAMES"))]
 bn = re.findall(r'"([a-z_0-9]+)"', b)
-count = int(re.search(r"CONSTANT_COUNT: usize = (\d+);", (root / "src/eval/builtins.rs").read_text()).group(1))
+count = int(re.search(r"CONSTANT_COUNT: usize = (\d+);", (root / "src/syntax/builtins.rs").read_text()).group(1))
 consts, funcs = bn[:count], bn[count:]
 colour = ["color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "srgb", "srgbf", "srgbt", "srgbft",
           "red", "green", "blue", "gray", "grey", "array", "optional"]

@@ -9,28 +9,8 @@
 //! where the container's surface is inside, it shows (unless `open`).
 
 use crate::build::Ray;
-use crate::eval::function::Function;
+pub use crate::scene::{Container, Isosurface};
 use glam::DVec3;
-use std::sync::Arc;
-
-/// The region an isosurface is searched in.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Container {
-    /// `contained_by { box { MIN, MAX } }` (corners sorted).
-    Box {
-        /// Lowest corner.
-        min: DVec3,
-        /// Highest corner.
-        max: DVec3,
-    },
-    /// `contained_by { sphere { CENTER, RADIUS } }`.
-    Sphere {
-        /// Centre.
-        center: DVec3,
-        /// Radius.
-        radius: f64,
-    },
-}
 
 impl Container {
     /// Entry and exit parameters of `ray` through the container.
@@ -68,27 +48,6 @@ impl Container {
             }
         }
     }
-}
-
-/// An isosurface as written (plain data) and ready to intersect.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Isosurface {
-    /// The function of x, y, z.
-    pub function: Arc<Function>,
-    /// Where the surface is searched.
-    pub container: Container,
-    /// The surface is where the function equals this (default 0).
-    pub threshold: f64,
-    /// How closely roots are found (default 0.001).
-    pub accuracy: f64,
-    /// The bound on the function's slope used to step (default 1.1).
-    pub max_gradient: f64,
-    /// `open`: the container's surface never shows.
-    pub open: bool,
-    /// `max_trace N`: how many crossings a ray reports (default 1, as in POV-Ray;
-    /// 0 for `all_intersections`). In CSG fewer crossings than the surface has
-    /// leave the same see-through gaps POV-Ray shows.
-    pub max_trace: u32,
 }
 
 /// Most function evaluations one ray may spend in one isosurface (a function
@@ -258,7 +217,9 @@ impl Isosurface {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::eval::function::{Body, Op};
+    use crate::scene::function::{Body, Op};
+    use crate::scene::Function;
+    use std::sync::Arc;
 
     fn sphere_fn() -> Arc<Function> {
         // sqrt(x*x + y*y + z*z) - 1

@@ -9,30 +9,8 @@
 //! it lies on. Inside is inside any of the spheres.
 
 use crate::build::Ray;
+pub use crate::scene::SweepSpline;
 use glam::DVec3;
-
-/// The spline a sweep follows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum SweepSpline {
-    /// `linear_spline`: straight between the points (at least 2).
-    Linear,
-    /// `b_spline`: a uniform cubic B-spline (at least 4 points; it passes
-    /// near, not through, them).
-    BSpline,
-    /// `cubic_spline`: a Catmull-Rom spline through all points but the first
-    /// and last (at least 4).
-    Cubic,
-}
-
-impl SweepSpline {
-    /// The fewest points the spline needs.
-    pub fn min_points(self) -> usize {
-        match self {
-            SweepSpline::Linear => 2,
-            _ => 4,
-        }
-    }
-}
 
 /// One piece of the sweep: centre `Σ c[k] sᵏ` and radius `Σ r[k] sᵏ` for
 /// `s ∈ [0, 1]`, with a sphere enclosing all its spheres.

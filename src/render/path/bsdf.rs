@@ -12,9 +12,9 @@
 //! Directions are unit vectors pointing away from the surface; `wo` towards the
 //! viewer, `wi` towards the light.
 
-use super::super::pigment;
 use super::super::shade::{fresnel, reflection_amount};
 use crate::build::SurfaceHit;
+use crate::pattern;
 use crate::render::sampler::turn;
 use crate::scene::{Finish, Interior, Texture};
 use glam::DVec3;
@@ -189,13 +189,13 @@ impl Bsdf {
     /// texture a patterned texture chose there).
     pub fn of_texture(s: &SurfaceHit, tex: &Texture, wo: DVec3) -> Bsdf {
         let n = match &tex.normal {
-            Some(nrm) => pigment::perturb(nrm, facing(s.normal, wo), s.p, s.texture_from_world),
+            Some(nrm) => pattern::perturb(nrm, facing(s.normal, wo), s.p, s.texture_from_world),
             None => facing(s.normal, wo),
         };
         let tp = s
             .texture_from_world
             .map_or(s.p, |m| m.transform_point3(s.p));
-        let c = pigment::evaluate_uv(&tex.pigment, tp, s.uv);
+        let c = pattern::evaluate_uv(&tex.pigment, tp, s.uv);
         let ior = s.interior.map_or(1.0, |i| i.ior);
         Bsdf::from_colour(tex, c, ior, n, wo, wo.dot(s.geo_normal) > 0.0)
     }

@@ -90,7 +90,7 @@ pub fn emitted(texture: &Texture, texture_from_world: Option<&DMat4>, p: DVec3) 
         return DVec3::ZERO;
     }
     let tp = texture_from_world.map_or(p, |m| m.transform_point3(p));
-    let c = super::super::pigment::evaluate(&texture.pigment, tp);
+    let c = crate::pattern::evaluate(&texture.pigment, tp);
     let opacity = (1.0 - c.filter - c.transmit).clamp(0.0, 1.0);
     e * c.rgb.max(DVec3::ZERO) * opacity
 }

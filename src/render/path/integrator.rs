@@ -172,9 +172,9 @@ pub fn radiance(
                         let tp = s
                             .texture_from_world
                             .map_or(s.p, |m| m.transform_point3(s.p));
-                        super::super::pigment::slope::set_surface_normal_facing(s.normal, ray.dir);
-                        let tex = super::super::pigment::plain_at(s.texture, tp, 0.5);
-                        let c = super::super::pigment::evaluate_uv(&tex.pigment, tp, s.uv);
+                        crate::pattern::slope::set_surface_normal_facing(s.normal, ray.dir);
+                        let tex = crate::pattern::plain_at(s.texture, tp, 0.5);
+                        let c = crate::pattern::evaluate_uv(&tex.pigment, tp, s.uv);
                         let glow = (tex.finish.ambient * world.global.ambient_light
                             + tex.finish.emission)
                             * c.rgb
@@ -197,9 +197,8 @@ pub fn radiance(
                         let tp = s
                             .texture_from_world
                             .map_or(s.p, |m| m.transform_point3(s.p));
-                        super::super::pigment::slope::set_surface_normal_facing(s.normal, ray.dir);
-                        let tex =
-                            super::super::pigment::plain_at(s.texture, tp, sampler.next_f64());
+                        crate::pattern::slope::set_surface_normal_facing(s.normal, ray.dir);
+                        let tex = crate::pattern::plain_at(s.texture, tp, sampler.next_f64());
                         Bsdf::of_texture(&s, tex, wo)
                     }
                     None => Bsdf::at(&s, wo),

@@ -132,15 +132,13 @@ pub fn transmittance(
             .texture_from_world
             .map_or(s.p, |m| m.transform_point3(s.p));
         let pass = |t: &crate::scene::Texture| {
-            let c = super::super::pigment::evaluate_uv(&t.pigment, tp, s.uv);
+            let c = crate::pattern::evaluate_uv(&t.pigment, tp, s.uv);
             (c.filter * c.rgb + DVec3::splat(c.transmit)).clamp(DVec3::ZERO, DVec3::ONE)
         };
         through *= if s.texture.patterned.is_some() {
             // A patterned texture: the textures it shows here, averaged by weight.
             let mut sum = DVec3::ZERO;
-            super::super::pigment::for_each_plain(s.texture, tp, 1.0, &mut |t, w| {
-                sum += w * pass(t)
-            });
+            crate::pattern::for_each_plain(s.texture, tp, 1.0, &mut |t, w| sum += w * pass(t));
             sum
         } else {
             pass(s.texture)

@@ -23,10 +23,10 @@ pub use map::{Photon, PhotonMap};
 
 use super::ior::{self, IorStack};
 use super::lights::{cylinder_attenuation, fade, spot_attenuation};
-use super::pigment;
 use super::sampler::mix;
 use super::shade::{bend, interior_fade, metallic_tint, reflection_amount, surface_filter};
 use crate::build::{Ray, RayKind, World};
+use crate::pattern;
 use crate::scene::{Interior, Light, LightKind, PhotonDensity};
 use glam::DVec3;
 use rayon::prelude::*;
@@ -440,12 +440,12 @@ impl<'a> Tracer<'a> {
         let tp = s
             .texture_from_world
             .map_or(s.p, |m| m.transform_point3(s.p));
-        pigment::slope::set_surface_normal_facing(s.normal, ph.ray.dir);
+        pattern::slope::set_surface_normal_facing(s.normal, ph.ray.dir);
         let (u, _) = self.random(i, 1 + split);
-        let tex = pigment::plain_at(s.texture, tp, u);
+        let tex = pattern::plain_at(s.texture, tp, u);
         let facing = |n: DVec3| if n.dot(d) > 0.0 { -n } else { n };
         let n = match &tex.normal {
-            Some(nrm) => pigment::perturb(nrm, facing(s.normal), s.p, s.texture_from_world),
+            Some(nrm) => pattern::perturb(nrm, facing(s.normal), s.p, s.texture_from_world),
             None => facing(s.normal),
         };
         let ior = s.interior.map_or(1.0, |i| i.ior);
@@ -475,7 +475,7 @@ impl<'a> Tracer<'a> {
         let mut kept = DVec3::ONE;
         let r = &tex.finish.reflection;
         if r.min != DVec3::ZERO || r.max != DVec3::ZERO {
-            let colour = pigment::evaluate_uv(&tex.pigment, tp, s.uv).rgb;
+            let colour = pattern::evaluate_uv(&tex.pigment, tp, s.uv).rgb;
             let cos_v = -n.dot(d);
             let amount =
                 reflection_amount(r, cos_v, eta_view) * metallic_tint(r.metallic, colour, cos_v);
