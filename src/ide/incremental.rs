@@ -287,6 +287,7 @@ impl Shift {
                     })
                     .collect(),
                 body: self.items(&m.body),
+                raw: m.raw.map(|s| self.span(s)),
             })),
             DirectiveKind::Include(e) => DirectiveKind::Include(self.expr(e)),
             DirectiveKind::Message(k, e) => DirectiveKind::Message(*k, self.expr(e)),

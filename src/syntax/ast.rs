@@ -164,6 +164,11 @@ pub struct MacroDef {
     pub params: Vec<Param>,
     /// The items the macro expands to.
     pub body: Vec<Item>,
+    /// The body's text when its brackets balance only once its `#if`s are
+    /// decided (`#if (F) #write (H, "{" #else mesh2 { #end`): POV-Ray reads a
+    /// macro token by token as it runs. `body` is then empty and this text is
+    /// parsed at each call, after the `#if`s the call decides.
+    pub raw: Option<Span>,
 }
 
 /// `#debug`, `#warning` or `#error`.

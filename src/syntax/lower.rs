@@ -20,6 +20,9 @@ pub struct Lowerer {
     pub offset: usize,
     /// Problems found while lowering (bad escapes, numbers, limits).
     pub diags: Vec<Diagnostic>,
+    /// Macro bodies the grammar saw blank, by offsets in the file (see
+    /// [`super::prepass::Marks::token_level`]).
+    pub token_level: Vec<(usize, usize)>,
 }
 
 type P<'i> = Pair<'i, Rule>;
@@ -325,11 +328,18 @@ impl Lowerer {
                         _ => {}
                     }
                 }
+                let raw = self
+                    .token_level
+                    .iter()
+                    .copied()
+                    .find(|&(s, e)| s >= span.start as usize && e <= span.end as usize)
+                    .map(|(s, e)| Span::new(self.file, s, e));
                 DirectiveKind::Macro(Rc::new(MacroDef {
                     name: intern(n.as_str()),
                     name_span,
                     params,
                     body,
+                    raw,
                 }))
             }
             Rule::include_d => {

@@ -524,7 +524,7 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    fn is_defined(&mut self, target: &LValue) -> R<bool> {
+    pub(crate) fn is_defined(&mut self, target: &LValue) -> R<bool> {
         if target.name.is_builtin() {
             return Ok(true);
         }

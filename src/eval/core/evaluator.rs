@@ -102,6 +102,9 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) partial: bool,
     /// Built-in library items not evaluated yet (see `lazy.rs`).
     pub(crate) pending: super::lazy::Pending,
+    /// Bodies of macros read token by token, parsed at their calls (see
+    /// `token_level.rs`).
+    pub(crate) token_bodies: super::token_level::TokenBodies,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps
@@ -183,6 +186,7 @@ impl<'a> Evaluator<'a> {
             spent: Spent::start(),
             partial: false,
             pending: Default::default(),
+            token_bodies: Default::default(),
         }
     }
 

@@ -356,7 +356,13 @@ impl Evaluator<'_> {
             span: call,
             message: format!("in macro `{}` called here", m.name),
         });
-        self.expand(&m.body, out);
+        match m.raw {
+            None => self.expand(&m.body, out),
+            Some(raw) => match self.token_level_body(m, raw) {
+                Ok(body) => self.expand(&body, out),
+                Err(f) => self.report(f),
+            },
+        }
         self.trace.pop();
         self.macro_depth -= 1;
         let mut frame = self.scope.take_top();

@@ -22,6 +22,7 @@ pub(crate) mod items;
 pub(crate) mod lazy;
 pub(crate) mod list;
 pub(crate) mod scope;
+pub(crate) mod token_level;
 pub(crate) mod trace;
 pub(crate) mod transforms;
 pub mod value;
