@@ -441,7 +441,14 @@ pub fn run(args: &RenderArgs) -> i32 {
     }
     if !still {
         if let Some(tl) = timeline {
-            return sequence::run(&mut r, &mut parsed, &base, &plan, tl, t_start);
+            return sequence::run(
+                &mut r,
+                &mut parsed,
+                &base,
+                &plan,
+                tl,
+                (t_start, path_traced),
+            );
         }
     }
     // A still: at --clock, at --frame's time, or the scene as first evaluated.

@@ -191,7 +191,6 @@ fn options_text(
     format: rts::output::Format,
 ) -> String {
     let a = r.args;
-    let p = &a.path;
     let settings = rts::render::Settings {
         crop: None,
         frame: still.frame as u32,
@@ -200,7 +199,7 @@ fn options_text(
     format!(
         "rts {}\nsize {}x{}\nsettings {:?}\ngamma {:?} bit_depth {} format {:?}\ndefines {:?}\n\
          include {:?}\nclock {:?} frame {} frames {:?} fps {:?} cyclic {} motion_blur {:?} motion_samples {:?}\n\
-         preview {}\npath_traced {} spp {:?} samples {:?} max_depth {:?} clamp {:?} pixel_filter {:?}\n",
+         preview {}\n{}\n",
         env!("CARGO_PKG_VERSION"),
         r.width,
         r.height,
@@ -218,12 +217,7 @@ fn options_text(
         a.motion_blur,
         a.motion_samples,
         a.preview,
-        still.path_traced,
-        p.spp,
-        a.samples,
-        p.max_depth,
-        p.clamp,
-        p.pixel_filter,
+        super::path_opts::key_text(a, still.path_traced),
     )
 }
 
