@@ -506,6 +506,7 @@ pub fn run(args: &RenderArgs) -> i32 {
             format,
             shard,
             path_traced,
+            t_parse,
         };
         return super::still_shard::run(&mut r, &mut parsed, &base, still, t_start);
     }

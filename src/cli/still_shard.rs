@@ -180,6 +180,8 @@ pub(crate) struct Still {
     pub shard: (u32, u32),
     /// The path tracer renders it.
     pub path_traced: bool,
+    /// Reading and first evaluating the scene took this long.
+    pub t_parse: std::time::Duration,
 }
 
 /// The options that decide a still's pixels and bytes, as text for the manifest
@@ -299,6 +301,7 @@ pub(crate) fn run(
     } else {
         r.output_options(img.assumed_gamma, img.gamma_off)
     };
+    let t_write = std::time::Instant::now();
     if let Err(e) = rts::output::write_as(&film, &part, format, &out) {
         eprintln!("error: {e}");
         return EXIT_ERRORS;
@@ -330,6 +333,43 @@ pub(crate) fn run(
             man_path.display()
         );
         return EXIT_ERRORS;
+    }
+    let settings = rts::render::Settings {
+        crop: Some(rts::render::Crop {
+            x0: 0,
+            y0,
+            x1: w,
+            y1,
+        }),
+        frame: still.frame as u32,
+        ..r.settings
+    };
+    let report = super::stats::Report {
+        output: &part,
+        format,
+        width: w,
+        height: h,
+        settings: &settings,
+        threads: r.threads(),
+        objects: img.objects,
+        lights: img.lights,
+        stats: img.stats,
+        times: super::stats::Times {
+            parse_eval: still.t_parse + img.t_eval,
+            build: img.t_build,
+            render: img.t_render,
+            write: t_write.elapsed(),
+            total: t_start.elapsed(),
+        },
+        peak_memory: super::stats::peak_memory_bytes(),
+    };
+    if !args.quiet {
+        eprint!("{}", report.human());
+    }
+    if let Some(path) = &args.stats_json {
+        if let Err(code) = super::stats::write_json(path, &report.json()) {
+            return code;
+        }
     }
     if !args.quiet {
         eprintln!(
