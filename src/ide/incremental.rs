@@ -144,7 +144,7 @@ impl Shift {
                 kind: self.directive(&d.kind),
                 span: self.span(d.span),
             })),
-            Item::Block(b) => Item::Block(Box::new(self.block(b))),
+            Item::Block(b) => Item::Block(Rc::new(self.block(b))),
             Item::Keyword(k) => Item::Keyword(crate::syntax::ast::Keyword {
                 name: k.name,
                 span: self.span(k.span),

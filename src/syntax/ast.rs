@@ -24,8 +24,9 @@ pub struct File {
 pub enum Item {
     /// `#declare …`, `#if …`, … .
     Directive(Box<Directive>),
-    /// `keyword { items }`, e.g. `sphere { 0, 1 }`.
-    Block(Box<Block>),
+    /// `keyword { items }`, e.g. `sphere { 0, 1 }`. Shared, so a block kept
+    /// for later (a deferred pigment) costs no copy.
+    Block(std::rc::Rc<Block>),
     /// A bare keyword, e.g. `phong` in `finish { phong 0.8 }`.
     Keyword(Keyword),
     /// `[ items ]`, e.g. `[0.5 color Red]` in a `color_map`.

@@ -85,7 +85,7 @@ impl Lowerer {
         let h = inner.next().expect("height");
         out.push(Item::Expr(Box::new(self.expr(h))));
         let items = self.items(inner);
-        out.push(Item::Block(Box::new(Block {
+        out.push(Item::Block(std::rc::Rc::new(Block {
             span: Span {
                 start: keyword.span.start,
                 ..span
@@ -99,7 +99,7 @@ impl Lowerer {
     fn item(&mut self, p: P) -> Item {
         let span = self.span(&p);
         match p.as_rule() {
-            Rule::block => Item::Block(Box::new(self.block(p))),
+            Rule::block => Item::Block(std::rc::Rc::new(self.block(p))),
             Rule::keyword => Item::Keyword(self.keyword(p)),
             Rule::bracket => {
                 let items = self.items(p.into_inner());

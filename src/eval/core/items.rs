@@ -59,7 +59,7 @@ impl Evaluator<'_> {
                     && matches!(b.keyword.name, "pigment" | "finish" | "normal") =>
             {
                 out.push(Tok::Deferred(Rc::new(super::cursor::Deferred {
-                    block: (**b).clone(),
+                    block: b.clone(),
                     locals: self.scope.locals(),
                     trace: self.trace.clone(),
                 })));
