@@ -176,6 +176,12 @@ impl Scopes {
         }
     }
 
+    /// Whether `name` is bound in a local scope (a macro's or an include
+    /// file's).
+    pub(crate) fn is_local(&self, name: Sym) -> bool {
+        self.frames[1..].iter().any(|f| f.contains_key(&name))
+    }
+
     /// How many scopes are open (1: only the global one).
     pub(crate) fn depth(&self) -> usize {
         self.frames.len()
