@@ -189,28 +189,31 @@ impl Isosurface {
         let size = hi - lo;
         let n = 8;
         let h = size.max_element() * 1e-4;
-        let mut best: f64 = 0.0;
-        for i in 0..n {
-            for j in 0..n {
-                for k in 0..n {
-                    let c = lo + size * (DVec3::new(i as f64, j as f64, k as f64) + 0.5) / n as f64;
-                    if !self.container.contains(c) {
-                        continue;
-                    }
-                    let f = |q: DVec3| self.function.eval3(q);
-                    let g = DVec3::new(
-                        f(c + DVec3::X * h) - f(c - DVec3::X * h),
-                        f(c + DVec3::Y * h) - f(c - DVec3::Y * h),
-                        f(c + DVec3::Z * h) - f(c - DVec3::Z * h),
-                    ) / (2.0 * h);
-                    let l = g.length();
-                    if l.is_finite() {
-                        best = best.max(l);
-                    }
+        // The points are independent (and max is order-free): sampled in
+        // parallel, as a pigment function can cost thousands of instructions.
+        use rayon::prelude::*;
+        (0..n * n * n)
+            .into_par_iter()
+            .map(|idx| {
+                let (i, j, k) = (idx / (n * n), (idx / n) % n, idx % n);
+                let c = lo + size * (DVec3::new(i as f64, j as f64, k as f64) + 0.5) / n as f64;
+                if !self.container.contains(c) {
+                    return 0.0;
                 }
-            }
-        }
-        best
+                let f = |q: DVec3| self.function.eval3(q);
+                let g = DVec3::new(
+                    f(c + DVec3::X * h) - f(c - DVec3::X * h),
+                    f(c + DVec3::Y * h) - f(c - DVec3::Y * h),
+                    f(c + DVec3::Z * h) - f(c - DVec3::Z * h),
+                ) / (2.0 * h);
+                let l = g.length();
+                if l.is_finite() {
+                    l
+                } else {
+                    0.0
+                }
+            })
+            .reduce(|| 0.0, f64::max)
     }
 }
 
