@@ -7,8 +7,7 @@
 //! move with its children's own transforms, as in POV-Ray.
 
 mod aabb;
-mod binary;
-mod bvh;
+pub mod accel;
 pub mod csg;
 pub mod mesh;
 pub mod quartic;
@@ -16,10 +15,9 @@ mod ray;
 mod shape;
 pub mod shapes;
 mod transparency;
-mod wide;
 
 pub use aabb::Aabb;
-pub use bvh::Bvh;
+pub use accel::Bvh;
 pub use ray::{surface_offset, Ray};
 pub use shape::{Hit, PrimShape, Primitive, ShapeHit, SmoothTriangle};
 
