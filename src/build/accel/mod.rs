@@ -34,7 +34,7 @@ const MAX_WORLD_LEAF: usize = 1;
 /// ray setup of the wide walk costs more than it saves.
 const WIDE_MIN: usize = 256;
 /// Whether the world's hierarchy is walked 8-wide (else as a binary tree in f64).
-const WORLD_WIDE: bool = true;
+const WORLD_WIDE: bool = false;
 /// Most primitives [`Bvh::flat`] takes. For the path tracer's scattered rays a
 /// flat list beat the world's tree at every size measured (the Cornell box with
 /// 14 to 200 small spheres added: 30 to 216 primitives, 12-28% more samples per
@@ -42,6 +42,24 @@ const WORLD_WIDE: bool = true;
 pub const FLAT_MAX: usize = 256;
 /// Flat lists of up to this many boxes keep their walk's keys in a small array.
 const FLAT_SMALL: usize = 32;
+
+/// Whether mesh leaves are culled in f32 before the f64 triangle tests
+/// ([`Bvh::traverse_triangles`]). Off: measured slower on the 1M-triangle mesh
+/// (`cargo bench --bench mesh`, Mrays per CPU second at AVX2): 3.28 without,
+/// 2.7-2.8 with leaves of up to 4 triangles, 2.5 with up to 8 (the corners are
+/// gathered through the index list for each leaf; the f64 test rejects most
+/// triangles at its first comparison anyway). Kept, and tested, for layouts
+/// that store leaf triangles side by side.
+const TRI_CULL: bool = false;
+
+/// A mesh's triangles as [`Bvh::traverse_triangles`] reads them.
+#[derive(Clone, Copy, Debug)]
+pub struct Triangles<'a> {
+    /// Vertex positions.
+    pub positions: &'a [[f32; 3]],
+    /// Corner indices into `positions`, per triangle.
+    pub triangles: &'a [[u32; 3]],
+}
 
 /// A binned-SAH BVH over primitive indices, walked 8-wide in f32 lanes (or, for
 /// small meshes, as a binary tree in f64). The path tracer walks small worlds
@@ -190,8 +208,55 @@ impl Bvh {
                 t_min,
                 t_max,
                 visit,
+                cull: traverse::KeepAll,
             });
         }
+    }
+
+    /// [`Bvh::traverse`] over a tree of triangles (`triangles`, indexing
+    /// `positions`): each leaf's triangles are first tested together in f32,
+    /// several to a register, and only those that may be hit go to `visit` for
+    /// the f64 test. The f32 test errs towards a hit, never a miss, so the
+    /// answers are the f64 test's.
+    #[inline]
+    pub fn traverse_triangles(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        triangles: Triangles<'_>,
+        visit: impl FnMut(u32, f64) -> Option<f64>,
+    ) {
+        if self.nodes.is_empty() || !TRI_CULL {
+            return self.traverse(ray, t_min, t_max, visit);
+        }
+        self.traverse_culled(ray, t_min, t_max, triangles, visit);
+    }
+
+    /// [`Bvh::traverse_triangles`] with the f32 cull whatever [`TRI_CULL`] says
+    /// (8-wide trees only).
+    #[inline]
+    pub(crate) fn traverse_culled(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        triangles: Triangles<'_>,
+        visit: impl FnMut(u32, f64) -> Option<f64>,
+    ) {
+        simd::dispatch(traverse::Closest {
+            nodes: &self.nodes,
+            prims: &self.prims,
+            ray,
+            t_min,
+            t_max,
+            visit,
+            cull: traverse::TriCull {
+                ray: kernels::RayTri::new(ray),
+                positions: triangles.positions,
+                triangles: triangles.triangles,
+            },
+        });
     }
 
     /// Whether `found(prim)` holds for a primitive whose box the ray enters

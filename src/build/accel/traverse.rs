@@ -6,7 +6,7 @@
 
 use pulp::{Simd, WithSimd};
 
-use super::kernels::{down, far, hit8, RayBoxes, WIDTH};
+use super::kernels::{down, far, hit8, tri_keep, RayBoxes, RayTri, TRI_CHUNK, WIDTH};
 use super::wide::Wide;
 use super::Ray;
 
@@ -44,17 +44,57 @@ fn sorted(mask: u32, dist: &[f32; WIDTH], low: impl Fn(usize) -> u32) -> ([u64; 
     (keys, n)
 }
 
+/// A first look at a leaf's primitives before `visit` tests them one by one:
+/// which of them (bit per primitive, at most [`TRI_CHUNK`]) may be hit.
+pub(super) trait Cull {
+    /// The primitives of `prims` (at most [`TRI_CHUNK`]) to test.
+    fn keep<S: Simd>(&self, s: S, prims: &[u32], t_min: f64, t_max: f64) -> u32;
+}
+
+/// No first look: every primitive is tested.
+pub(super) struct KeepAll;
+
+impl Cull for KeepAll {
+    #[inline(always)]
+    fn keep<S: Simd>(&self, _: S, _: &[u32], _: f64, _: f64) -> u32 {
+        u32::MAX
+    }
+}
+
+/// A mesh's triangles, culled in f32 several at a time ([`tri_keep`]).
+pub(super) struct TriCull<'a> {
+    pub(super) ray: RayTri,
+    pub(super) positions: &'a [[f32; 3]],
+    pub(super) triangles: &'a [[u32; 3]],
+}
+
+impl Cull for TriCull<'_> {
+    #[inline(always)]
+    fn keep<S: Simd>(&self, s: S, prims: &[u32], t_min: f64, t_max: f64) -> u32 {
+        tri_keep(
+            s,
+            &self.ray,
+            self.positions,
+            self.triangles,
+            prims,
+            t_min,
+            t_max,
+        )
+    }
+}
+
 /// The nearest-first walk ([`super::Bvh::traverse`]).
-pub(super) struct Closest<'a, F> {
+pub(super) struct Closest<'a, F, C> {
     pub(super) nodes: &'a [Wide],
     pub(super) prims: &'a [u32],
     pub(super) ray: &'a Ray,
     pub(super) t_min: f64,
     pub(super) t_max: f64,
     pub(super) visit: F,
+    pub(super) cull: C,
 }
 
-impl<F: FnMut(u32, f64) -> Option<f64>> WithSimd for Closest<'_, F> {
+impl<F: FnMut(u32, f64) -> Option<f64>, C: Cull> WithSimd for Closest<'_, F, C> {
     type Output = ();
 
     #[inline(always)]
@@ -66,6 +106,7 @@ impl<F: FnMut(u32, f64) -> Option<f64>> WithSimd for Closest<'_, F> {
             t_min,
             mut t_max,
             mut visit,
+            cull,
         } = self;
         if nodes.is_empty() {
             return;
@@ -118,14 +159,21 @@ impl<F: FnMut(u32, f64) -> Option<f64>> WithSimd for Closest<'_, F> {
                     node = child as usize;
                     break;
                 }
-                for &p in &prims[child as usize..(child + count) as usize] {
-                    match visit(p, t_max) {
-                        Some(t) if t < t_max => {
-                            t_max = t;
-                            far32 = far(t);
+                let leaf = &prims[child as usize..(child + count) as usize];
+                for chunk in leaf.chunks(TRI_CHUNK) {
+                    let keep = cull.keep(s, chunk, t_min, t_max);
+                    for (i, &p) in chunk.iter().enumerate() {
+                        if keep & (1 << i) == 0 {
+                            continue;
                         }
-                        Some(_) => {}
-                        None => return,
+                        match visit(p, t_max) {
+                            Some(t) if t < t_max => {
+                                t_max = t;
+                                far32 = far(t);
+                            }
+                            Some(_) => {}
+                            None => return,
+                        }
                     }
                 }
             }
