@@ -20,6 +20,15 @@
 //! 2026-11-22, idle, after the 4-wide walk for meshes (src/build/wide.rs): build
 //! 0.28 s (criterion), primary rays 5.09-5.10 Mrays/s in two runs (2.69 Mrays per
 //! CPU second), peak 100 MB (BVH 21 MB).
+//! 2026-11-28, load 5-7 on 2 cores (so per CPU second is the number to read),
+//! back to back with main's binary: 8-wide nodes (src/build/accel, pulp kernels)
+//! 3.00-3.28 Mrays per CPU second at AVX-512 and AVX2, 2.44 at the scalar
+//! level (`RTS_SIMD=scalar`), against 3.08-3.28 for the 4-wide walk; build
+//! 0.41-0.44 CPU s both (same builder); peak 97-103 MB against 103-104 (BVH 27 MB
+//! against 21: 8-wide nodes are less full). The f32 cull of leaf triangles
+//! measured 2.6-2.8 (leaves of 4) and 2.5 (leaves of 8): off. Embree 4 on the
+//! same mesh and rays (tests/compare/embree_mesh.py): 5.3-5.5 Mrays per CPU
+//! second, 3.5 Mrays/s on 1 thread, 4.9 on 2; build + first ray 0.92 s.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use glam::DVec3;

@@ -7,8 +7,7 @@
 //! move with its children's own transforms, as in POV-Ray.
 
 mod aabb;
-mod binary;
-mod bvh;
+pub mod accel;
 pub mod csg;
 pub mod mesh;
 pub mod quartic;
@@ -16,10 +15,9 @@ mod ray;
 mod shape;
 pub mod shapes;
 mod transparency;
-mod wide;
 
 pub use aabb::Aabb;
-pub use bvh::Bvh;
+pub use accel::Bvh;
 pub use ray::{surface_offset, Ray};
 pub use shape::{Hit, PrimShape, Primitive, ShapeHit, SmoothTriangle};
 
@@ -824,12 +822,7 @@ impl World {
         if self.unbounded.iter().any(|&i| hit_by(i)) {
             return true;
         }
-        let mut found = false;
-        bvh.traverse(ray, t_min, t_max, |i, t_max| {
-            found = hit_by(i);
-            (!found).then_some(t_max)
-        });
-        found
+        bvh.any(ray, t_min, t_max, hit_by)
     }
 
     /// [`World::occluded`] that first tests primitive `hint` (any index; ones out
@@ -928,12 +921,12 @@ impl World {
             return true;
         }
         let mut found = None;
-        self.bvh.traverse(ray, t_min, t_max, |i, t_max| {
-            if blocks(i) {
+        self.bvh.any(ray, t_min, t_max, |i| {
+            let yes = blocks(i);
+            if yes {
                 found = Some(i);
-                return None;
             }
-            Some(t_max)
+            yes
         });
         if let Some(i) = found {
             *hint = i;

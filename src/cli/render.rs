@@ -156,6 +156,11 @@ pub struct RenderArgs {
     /// Number of threads (default: all cores). The image is the same for any number.
     #[arg(help_heading = "Sampling", long, value_name = "N")]
     pub threads: Option<usize>,
+    /// SIMD level of the ray-box and traversal kernels: auto (the best the
+    /// processor has), scalar, v3 (AVX2) or v4 (AVX-512); overrides RTS_SIMD.
+    /// The image is the same at every level.
+    #[arg(help_heading = "Sampling", long, value_name = "LEVEL")]
+    pub simd: Option<String>,
     /// Write the statistics as JSON to FILE (`-` for stdout).
     #[arg(help_heading = "Output", long, value_name = "FILE")]
     pub stats_json: Option<PathBuf>,
@@ -174,6 +179,24 @@ pub struct RenderArgs {
 fn usage(msg: impl std::fmt::Display) -> i32 {
     eprintln!("error: {msg}");
     EXIT_USAGE
+}
+
+/// Sets the SIMD level from `--simd`, else from `RTS_SIMD` (see
+/// [`rts::build::accel::set_simd_level`]).
+pub fn choose_simd(flag: Option<&str>) -> Result<(), String> {
+    use rts::build::accel::{set_simd_level, SimdLevel, SIMD_ENV};
+    let (value, from) = match flag {
+        Some(v) => (v.to_string(), "--simd".to_string()),
+        None => match std::env::var(SIMD_ENV) {
+            Ok(v) => (v, SIMD_ENV.to_string()),
+            Err(_) => return Ok(()),
+        },
+    };
+    let level = SimdLevel::parse(&value).ok_or_else(|| {
+        format!("{from} {value}: expected auto, scalar, v3 (AVX2) or v4 (AVX-512)")
+    })?;
+    set_simd_level(level);
+    Ok(())
 }
 
 /// `X0,Y0,X1,Y1` checked against a `w`×`h` image.
@@ -341,6 +364,9 @@ pub fn run(args: &RenderArgs) -> i32 {
     }
     if args.preview && args.crop.is_some() {
         return usage("--preview and --crop cannot be used together");
+    }
+    if let Err(msg) = choose_simd(args.simd.as_deref()) {
+        return usage(msg);
     }
     let (width, height) = if args.preview {
         ((args.width / 2).max(1), (args.height / 2).max(1))

@@ -5,7 +5,7 @@
 //! processor run ahead, measured faster than the 4-wide one large meshes use (see
 //! [`super::wide`]).
 
-use super::bvh::Node;
+use super::builder::Node;
 use super::Ray;
 use glam::DVec3;
 
