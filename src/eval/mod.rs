@@ -121,6 +121,11 @@ pub struct EvalOptions {
     /// Largest `#include`d file, and file `#fopen` reads, in bytes
     /// (`--max-source-size`).
     pub max_source_size: u64,
+    /// In an animation (`clock_on`), whether [`eval_cached`] reuses what the
+    /// top-level items the clock does not touch did in an earlier frame
+    /// instead of evaluating them again (same scene; `--no-eval-cache` turns
+    /// it off).
+    pub reuse: bool,
 }
 
 impl Default for EvalOptions {
@@ -154,6 +159,7 @@ impl Default for EvalOptions {
             lazy_library: true,
             max_write: 256 << 20,
             max_source_size: MAX_SOURCE_SIZE,
+            reuse: true,
         }
     }
 }
@@ -194,6 +200,7 @@ pub struct EvalCache {
     pub(crate) meshes: objects::mesh_cache::MeshCache,
     images: self::core::images::ImageCache,
     data_files: std::collections::BTreeSet<PathBuf>,
+    records: self::core::reuse::Records,
 }
 
 impl EvalCache {
@@ -206,6 +213,12 @@ impl EvalCache {
     /// size and modification time stay the same, however often it is used.
     pub fn images_decoded(&self) -> u64 {
         self.images.decoded()
+    }
+
+    /// Top-level items (units) reused from an earlier evaluation instead of
+    /// evaluated, and evaluated, over all evaluations so far.
+    pub fn units(&self) -> (u64, u64) {
+        (self.records.replayed, self.records.evaluated)
     }
 }
 
@@ -240,6 +253,7 @@ pub fn eval_cached(
         }
     }
     ev.partial = !file.unparsed.is_empty();
+    ev.start_units();
     ev.run_top(&file.items);
     ev.finish_run(cache)
 }

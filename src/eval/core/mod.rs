@@ -21,6 +21,7 @@ pub(crate) mod include;
 pub(crate) mod items;
 pub(crate) mod lazy;
 pub(crate) mod list;
+pub(crate) mod reuse;
 pub(crate) mod scope;
 pub(crate) mod trace;
 pub(crate) mod transforms;
