@@ -203,3 +203,74 @@ fn moving_values_reach_what_reads_them() {
         "replayed {replayed}, evaluated {evaluated}"
     );
 }
+
+/// Runs the binary in `dir`; panics when it fails.
+fn rts(dir: &Path, args: &[&str]) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rts"))
+        .current_dir(dir)
+        .args(args)
+        .output()
+        .expect("run rts");
+    assert!(
+        out.status.success(),
+        "rts {args:?} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// Frames 1-3 of `scene` (in `dir`) through the binary, written under `out`:
+/// with reuse, with `--no-eval-cache`, and frame 2 as a `--frame` still, all
+/// the same bytes.
+fn same_pictures(dir: &Path, scene: &str, out: &Path) {
+    let size = ["-W", "16", "-H", "12", "--samples", "1", "-q"];
+    let run = |sub: &str, extra: &[&str]| {
+        let pattern = out.join(sub).join("o_####.png");
+        let pattern = pattern.to_str().unwrap();
+        let mut a = vec!["render", scene, "-o", pattern, "--frames", "1..3"];
+        a.extend_from_slice(&size);
+        a.extend_from_slice(extra);
+        rts(dir, &a);
+    };
+    run("reuse", &[]);
+    run("full", &["--no-eval-cache"]);
+    let still = out.join("still.png");
+    let mut a = vec!["render", scene, "-o", still.to_str().unwrap()];
+    a.extend_from_slice(&["--frames", "1..3", "--frame", "2"]);
+    a.extend_from_slice(&size);
+    rts(dir, &a);
+    for k in 1..=3 {
+        let name = format!("o_{k:04}.png");
+        let reused = std::fs::read(out.join("reuse").join(&name)).unwrap();
+        let full = std::fs::read(out.join("full").join(&name)).unwrap();
+        assert!(reused == full, "{scene}: frame {k} differs with reuse");
+        if k == 2 {
+            assert!(
+                std::fs::read(&still).unwrap() == reused,
+                "{scene}: frame 2 differs from the --frame 2 still"
+            );
+        }
+    }
+}
+
+#[test]
+fn animation_frames_are_the_same_bytes_with_reuse() {
+    let out = folder("pictures");
+    let tricky = folder("tricky_pictures");
+    std::fs::write(tricky.join("part.inc"), PART).unwrap();
+    std::fs::write(tricky.join("scene.rts"), TRICKY).unwrap();
+    same_pictures(&tricky, "scene.rts", &out.join("tricky"));
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let animated = |p: &PathBuf| {
+        std::fs::read_to_string(p).is_ok_and(|t| {
+            ["clock", "frame_number", "keyframes", "camera_path", "seed("]
+                .iter()
+                .any(|w| t.contains(w))
+        })
+    };
+    for dir in ["examples", "tests/fixtures/ok"] {
+        for p in scenes(dir).into_iter().filter(animated) {
+            let name = p.file_name().unwrap().to_str().unwrap();
+            same_pictures(&root.join(dir), name, &out.join(name));
+        }
+    }
+}
