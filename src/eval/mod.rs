@@ -10,7 +10,9 @@
 //! - `core/`: the language itself: the `Evaluator`
 //!   and the context of the block being read, the cursor over a block's
 //!   evaluated items, item expansion and macros, directives, expressions,
-//!   values, scopes, `#include`, file I/O, built-ins and budgets;
+//!   values, scopes, `#include`, file I/O, built-ins and budgets, and the
+//!   reuse of top-level items the clock does not touch from one frame to the
+//!   next (`reuse.rs`);
 //! - `objects/`: readers of shapes, CSG and object modifiers, meshes (mesh2,
 //!   import), revolved shapes, blobs, text and isosurfaces;
 //! - `materials/`: readers of textures, pigments, normals, finishes, interiors,
@@ -193,7 +195,11 @@ pub struct Declared {
 /// frames of an animation): parsed include files, meshes read from files, and
 /// meshes by content, so geometry that does not change keeps the same `Arc` (and
 /// with it its BVH, see [`crate::build::BuildCache`]) from frame to frame; and
-/// decoded images, read again only when their file changes.
+/// decoded images, read again only when their file changes; and, in an
+/// animation ([`EvalOptions::reuse`]), what each top-level item the clock does
+/// not touch did, replayed instead of evaluating the item again (the same
+/// parsed file must be evaluated each time; other options than the clock's
+/// make it forget).
 #[derive(Default)]
 pub struct EvalCache {
     parsed_includes: rustc_hash::FxHashMap<FileId, Option<std::rc::Rc<ast::File>>>,

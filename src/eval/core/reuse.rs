@@ -31,7 +31,7 @@
 //! command line's `--no-eval-cache` evaluates every item of every frame.
 
 use super::lazy::Pending;
-use super::scope::Binding;
+use super::scope::Written;
 use super::Evaluator;
 use crate::diag::{Diagnostic, Severity};
 use crate::scene::{Atmosphere, Camera, Colour, GlobalSettings, Light, Object, Texture, Timeline};
@@ -49,7 +49,7 @@ pub(crate) struct Record {
     /// Names read: stamp found (0: unbound), whether the read marked it used.
     reads: Vec<(Sym, u64, bool)>,
     /// Bindings written, as left (`None`: removed).
-    writes: Vec<(usize, Sym, Option<Binding>)>,
+    writes: Vec<Written>,
     /// `rand` stream states before and after, if it used them.
     rand: Option<(Vec<u64>, Vec<u64>)>,
     /// Pending library state before, and the pending items after when changed.

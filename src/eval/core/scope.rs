@@ -73,6 +73,10 @@ impl Journal {
     }
 }
 
+/// A binding a journaled item wrote: its scope, its name and the binding it
+/// left (`None`: removed).
+pub(crate) type Written = (usize, Sym, Option<Binding>);
+
 /// The stack of scopes; index 0 is global.
 pub(crate) struct Scopes {
     frames: Vec<Frame>,
@@ -108,7 +112,7 @@ impl Scopes {
 
     /// Stops journaling; the bindings the item wrote get fresh stamps.
     /// Returns the journal and the bindings written (`None`: removed).
-    pub(crate) fn end_journal(&mut self) -> Option<(Journal, Vec<(usize, Sym, Option<Binding>)>)> {
+    pub(crate) fn end_journal(&mut self) -> Option<(Journal, Vec<Written>)> {
         let j = self.journal.get_mut().take()?;
         let mut out = Vec::with_capacity(j.writes.len());
         for &(frame, name) in &j.writes {
