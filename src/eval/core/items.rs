@@ -41,8 +41,25 @@ impl Evaluator<'_> {
             // does not touch it (see `reuse.rs`).
             if out.top && self.is_unit(item) {
                 self.unit(item.span(), |ev| ev.expand_unit(unit, out));
-            } else {
-                self.expand_unit(unit, out);
+                continue;
+            }
+            // (The same as `expand_unit`, written here to keep deep macro
+            // recursion from using more stack.)
+            self.expand_item(item, out);
+            if let Some((local, target)) = declared_texture(item) {
+                for next in &unit[1..] {
+                    if let Item::Block(next) = next {
+                        if let Err(f) = self.layer_declared(local, target, next) {
+                            self.report(f);
+                        }
+                    }
+                }
+            }
+            if out.top {
+                let toks = std::mem::take(&mut out.toks);
+                for t in toks {
+                    self.place(t);
+                }
             }
         }
     }

@@ -213,6 +213,9 @@ impl Evaluator<'_> {
 
     /// Runs the unit starting with the item at `span`: replays its record when
     /// it may, else runs `eval` (which evaluates and places it) and records it.
+    // Not inlined: its state would enlarge `expand`'s frame, which deep macro
+    // recursion repeats.
+    #[inline(never)]
     pub(crate) fn unit(&mut self, span: Span, eval: impl FnOnce(&mut Self)) {
         let ordinal = self.reuse.next;
         self.reuse.next += 1;
@@ -237,6 +240,7 @@ impl Evaluator<'_> {
         self.end_unit(start);
     }
 
+    #[inline(never)]
     fn begin_unit(&mut self, ordinal: usize, span: Span) -> Start {
         self.moving.set(false);
         self.pending.touched.set(false);
@@ -260,6 +264,7 @@ impl Evaluator<'_> {
         }
     }
 
+    #[inline(never)]
     fn end_unit(&mut self, s: Start) {
         let diags = self.unit_diags.take().unwrap_or_default();
         let Some((journal, writes)) = self.scope.end_journal() else {
