@@ -606,3 +606,33 @@ fn keyframes_are_operands_in_expressions() {
         assert!(text.contains(want), "clock {clock}: {text}");
     }
 }
+
+#[test]
+fn path_tracer_options_invalidate_old_frames() {
+    let dir = scratch("path_options");
+    std::fs::write(dir.join("orbit.rts"), ORBIT).unwrap();
+    let path = |spp: &str| {
+        stderr(&rts(
+            &dir,
+            &[
+                "render",
+                "orbit.rts",
+                "-o",
+                "p/o_####.png",
+                "-W",
+                "12",
+                "-H",
+                "9",
+                "--integrator",
+                "path",
+                "--spp",
+                spp,
+            ],
+        ))
+    };
+    assert!(path("1").contains("rendered 6, skipped 0"));
+    assert!(path("1").contains("rendered 0, skipped 6"));
+    // More samples per pixel are other pixels: every frame is rendered again.
+    let more = path("2");
+    assert!(more.contains("rendered 6, skipped 0"), "{more}");
+}

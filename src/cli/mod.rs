@@ -1,4 +1,4 @@
-//! The command line: `rts render`, `rts check`, `rts lsp`, `rts watch`. One file per subcommand.
+//! The command line: `rts render`, `rts check`, `rts lsp`, `rts watch`, `rts merge`. One file per subcommand.
 
 mod assemble;
 mod check;
@@ -7,12 +7,14 @@ mod frame;
 mod interrupt;
 mod lsp;
 mod manifest;
+mod merge;
 mod outputs;
 mod path_opts;
 mod render;
 mod sequence;
 mod size;
 mod stats;
+mod still_shard;
 mod unused;
 mod watch;
 
@@ -159,6 +161,8 @@ pub enum Command {
     Lsp(lsp::LspArgs),
     /// Re-render a scene whenever it or a file it includes changes.
     Watch(watch::WatchArgs),
+    /// Stack the row bands of a still (`rts render --shard I/N`) into one image.
+    Merge(merge::MergeArgs),
 }
 
 /// For an unknown short option whose other-case twin exists (`-w` for `-W`),
@@ -206,5 +210,6 @@ pub fn run(cli: Cli) -> i32 {
         Command::Check(args) => check::run(&args),
         Command::Lsp(args) => lsp::run(&args),
         Command::Watch(args) => watch::run(&args),
+        Command::Merge(args) => merge::run(&args),
     }
 }

@@ -260,6 +260,16 @@ fn plan(p: &PathArgs, scene_pt: Option<&PathTracing>, output: &Path) -> Result<P
     })
 }
 
+/// The path tracer options that change pixels, as text for a manifest's key
+/// (with whether the path tracer renders at all).
+pub fn key_text(args: &RenderArgs, path_traced: bool) -> String {
+    let p = &args.path;
+    format!(
+        "path_traced {path_traced} spp {:?} samples {:?} max_depth {:?} clamp {:?} pixel_filter {:?}",
+        p.spp, args.samples, p.max_depth, p.clamp, p.pixel_filter
+    )
+}
+
 /// `OUT` with `.NAME.exr` in place of its extension.
 fn aov_path(output: &Path, name: &str) -> PathBuf {
     output.with_extension(format!("{name}.exr"))

@@ -119,8 +119,9 @@ pub struct RenderArgs {
     /// Re-render every frame of a sequence, even those already complete.
     #[arg(help_heading = "Animation", long)]
     pub force: bool,
-    /// Render only part I of N of a sequence (I from 1 to N; frames dealt out in
-    /// turn), so N machines together render every frame once.
+    /// Render only part I of N (I from 1 to N), so N machines together render
+    /// everything once: of a sequence, frames dealt out in turn; of a still, row
+    /// band I, written to OUT-stem.part-I-of-N.EXT for `rts merge`.
     #[arg(help_heading = "Animation", long, value_name = "I/N")]
     pub shard: Option<String>,
     /// After a sequence, assemble its frames into an animated GIF.
@@ -446,7 +447,14 @@ pub fn run(args: &RenderArgs) -> i32 {
     }
     if !still {
         if let Some(tl) = timeline {
-            return sequence::run(&mut r, &mut parsed, &base, &plan, tl, t_start);
+            return sequence::run(
+                &mut r,
+                &mut parsed,
+                &base,
+                &plan,
+                tl,
+                (t_start, path_traced),
+            );
         }
     }
     // A still: at --clock, at --frame's time, or the scene as first evaluated.
@@ -494,6 +502,20 @@ pub fn run(args: &RenderArgs) -> i32 {
         Err(e) => return usage(e),
     };
     let t_parse = t_probe;
+    if let Some(shard) = plan.shard {
+        // One row band of the still, for `rts merge`.
+        let still = super::still_shard::Still {
+            instants,
+            first,
+            frame: frame_no,
+            output,
+            format,
+            shard,
+            path_traced,
+            t_parse,
+        };
+        return super::still_shard::run(&mut r, &mut parsed, &base, still, t_start);
+    }
     if path_traced && instants.len() == 1 {
         // Progressive path tracing of a still (checkpoints, --time-limit, AOVs).
         let scene = match first {

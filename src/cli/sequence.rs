@@ -258,11 +258,12 @@ fn options_text(
     base: &EvalOptions,
     t: &Timeline,
     format: rts::output::Format,
+    path_traced: bool,
 ) -> String {
     let a = r.args;
     format!(
         "rts {}\nsize {}x{}\nsettings {:?}\ngamma {:?} bit_depth {} format {:?}\ndefines {:?}\n\
-         include {:?}\ntimeline frames {}..{} clock {}..{} fps {} cyclic {} shutter {} samples {}\npreview {}\n",
+         include {:?}\ntimeline frames {}..{} clock {}..{} fps {} cyclic {} shutter {} samples {}\npreview {}\n{}\n",
         env!("CARGO_PKG_VERSION"),
         r.width,
         r.height,
@@ -280,7 +281,10 @@ fn options_text(
         t.cyclic,
         t.shutter,
         t.motion_samples,
-        a.preview
+        a.preview,
+        // The path tracer's options shape its frames as much as --samples the
+        // classic renderer's.
+        super::path_opts::key_text(a, path_traced)
     )
 }
 
@@ -317,14 +321,15 @@ fn remove_stale_temporaries(dir: &Path, files: &[PathBuf]) {
     }
 }
 
-/// Renders the frames of `t` (the part `plan` asks for) and assembles them.
+/// Renders the frames of `t` (the part `plan` asks for) and assembles them;
+/// `path_traced`: the path tracer renders them (its options join the manifest's key).
 pub fn run(
     r: &mut Renderer,
     parsed: &mut common::Parsed,
     base: &EvalOptions,
     plan: &Plan,
     t: Timeline,
-    t_start: Instant,
+    (t_start, path_traced): (Instant, bool),
 ) -> i32 {
     let args = r.args;
     let (first, last) = plan.range(&t);
@@ -385,7 +390,7 @@ pub fn run(
     };
     let mut man = manifest::Manifest::new(
         manifest::scene_hash(&parsed.sources, parsed.cache.data_files()),
-        options_text(r, base, &t, format),
+        options_text(r, base, &t, format, path_traced),
     );
     let man_path = manifest::path_for(&pattern, plan.shard);
     // Every file this run writes must be a regular file (or none yet): a FIFO

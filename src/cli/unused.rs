@@ -64,7 +64,8 @@ pub fn warnings(args: &RenderArgs, mode: Mode) -> Vec<String> {
     );
     if !mode.sequence {
         let why = "it applies to the frames of a sequence, and this renders one picture";
-        given("--force", args.force, &mut out, why);
+        // (A still's --shard skips a complete part unless --force.)
+        given("--force", args.force && args.shard.is_none(), &mut out, why);
     }
     out
 }

@@ -149,3 +149,15 @@ pub const MAX_GRADIENT: &str = "rts::lint::max_gradient";
 pub const MEDIA_NOT_HOLLOW: &str = "rts::lint::media_not_hollow";
 /// The path tracer renders a scene with media without them (warning).
 pub const MEDIA_IGNORED: &str = "rts::render::media_ignored";
+/// `rts render --shard I/N` of a still with an option no band can reproduce.
+pub const SHARD_UNSUPPORTED: &str = "rts::shard::unsupported";
+/// `rts merge`: parts rendered from different scene files (or includes, data files).
+pub const MERGE_DIFFERENT_SCENE: &str = "rts::merge::different_scene";
+/// `rts merge`: parts rendered with different options.
+pub const MERGE_DIFFERENT_OPTIONS: &str = "rts::merge::different_options";
+/// `rts merge`: rows of the image that no part holds (a shard not rendered).
+pub const MERGE_MISSING_BAND: &str = "rts::merge::missing_band";
+/// `rts merge`: two parts hold the same rows.
+pub const MERGE_OVERLAPPING_BANDS: &str = "rts::merge::overlapping_bands";
+/// `rts merge`: a part or its manifest unreadable, or changed since it was recorded.
+pub const MERGE_BAD_PART: &str = "rts::merge::bad_part";

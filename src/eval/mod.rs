@@ -36,8 +36,9 @@ pub use self::core::include::{
     find_include, load_file, load_file_limited, search_dirs, LoadError, MAX_SOURCE_SIZE, STDLIB,
 };
 pub use self::core::value::Value;
-pub use self::core::vocabulary::{block_keywords, TOP_LEVEL_KEYWORDS};
+pub use self::core::vocabulary::{block_keywords, top_level_keywords};
 pub use self::core::{file_io, value};
+pub use self::objects::object::OBJECT_BLOCKS;
 pub use crate::scene::{Spline, SplineKind};
 pub use crate::syntax::builtins::{is_function as is_builtin_function, BUILTIN_NAMES};
 pub use animation::keyframe::{ease, Easing};

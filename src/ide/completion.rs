@@ -5,7 +5,7 @@
 use super::index::{include_candidates, DefKind};
 use super::lexer::{context, Context};
 use super::{docs, Analysis, Position, Range};
-use crate::eval::{block_keywords, TOP_LEVEL_KEYWORDS};
+use crate::eval::{block_keywords, top_level_keywords};
 use crate::syntax::keywords::KEYWORDS;
 use std::collections::HashSet;
 use std::path::Path;
@@ -78,7 +78,7 @@ pub fn completion(a: &Analysis, pos: Position) -> Vec<CompletionItem> {
         }
         Context::Items(block) => {
             let keywords: Vec<&'static str> = match block.as_deref() {
-                None => TOP_LEVEL_KEYWORDS.to_vec(),
+                None => top_level_keywords(),
                 Some(b) => block_keywords(b).unwrap_or_else(|| KEYWORDS.to_vec()),
             };
             let mut out: Vec<CompletionItem> = keywords

@@ -796,6 +796,11 @@ pub const DOCS: &[Doc] = &[
         "dispersion D",
         "Splits light by wavelength (ior varies by colour).",
     ),
+    kw(
+        "dispersion_samples",
+        "dispersion_samples N",
+        "How many wavelengths a dispersing interior samples (read; dispersion is not rendered yet).",
+    ),
     // camera
     kw(
         "camera",

@@ -144,7 +144,7 @@ impl Shift {
                 kind: self.directive(&d.kind),
                 span: self.span(d.span),
             })),
-            Item::Block(b) => Item::Block(Box::new(self.block(b))),
+            Item::Block(b) => Item::Block(Rc::new(self.block(b))),
             Item::Keyword(k) => Item::Keyword(crate::syntax::ast::Keyword {
                 name: k.name,
                 span: self.span(k.span),
@@ -287,6 +287,7 @@ impl Shift {
                     })
                     .collect(),
                 body: self.items(&m.body),
+                raw: m.raw.map(|s| self.span(s)),
             })),
             DirectiveKind::Include(e) => DirectiveKind::Include(self.expr(e)),
             DirectiveKind::Message(k, e) => DirectiveKind::Message(*k, self.expr(e)),

@@ -3,6 +3,7 @@
 //! defined, where each name is used, which files are included, and the document's
 //! outline. It needs only the syntax tree, so it works when evaluation fails.
 
+use crate::eval::OBJECT_BLOCKS;
 use crate::eval::{find_include, load_file, EvalOptions, STDLIB};
 use crate::source::SourceMap;
 use crate::span::{FileId, Span};
@@ -131,42 +132,6 @@ pub struct Index {
     pub files: Vec<FileId>,
 }
 
-const OBJECT_BLOCKS: &[&str] = &[
-    "sphere",
-    "plane",
-    "box",
-    "cylinder",
-    "cone",
-    "torus",
-    "disc",
-    "triangle",
-    "smooth_triangle",
-    "polygon",
-    "quadric",
-    "poly",
-    "cubic",
-    "quartic",
-    "mesh",
-    "mesh2",
-    "polyhedron",
-    "height_field",
-    "object",
-    "union",
-    "merge",
-    "intersection",
-    "difference",
-    "blob",
-    "isosurface",
-    "lathe",
-    "prism",
-    "sor",
-    "superellipsoid",
-    "text",
-    "sphere_sweep",
-    "bicubic_patch",
-    "julia_fractal",
-    "light_group",
-];
 const CSG: &[&str] = &[
     "union",
     "merge",

@@ -26,11 +26,14 @@ pub(super) fn encode(
     format: Format,
     opts: &OutputOptions,
 ) -> EncodeResult {
+    let (w, h) = (film.width, film.height);
+    let row = |y: usize, dst: &mut [u8]| encode_row(film.row(y as u32), dst, opts);
+    let value = |i: usize| film.pixels[i].to_array().map(|v| linear(v, opts));
     match format {
-        Format::Png => write_png(out, film, opts),
-        Format::Ppm => write_ppm(out, film, opts),
-        Format::Exr => write_exr(out, film, opts),
-        Format::Hdr => write_hdr(out, film, opts),
+        Format::Png => write_png(out, (w, h), opts.bit_depth, row),
+        Format::Ppm => write_ppm(out, (w, h), opts.bit_depth, row),
+        Format::Exr => write_exr(out, (w, h), value),
+        Format::Hdr => write_hdr(out, (w, h), value),
     }
 }
 
@@ -53,19 +56,22 @@ fn encode_row(row: &[Vec3], dst: &mut [u8], opts: &OutputOptions) {
     }
 }
 
-/// The integer file samples of `film`, [`BAND_ROWS`] rows at a time, passed to
-/// `sink` top to bottom.
-fn integer_rows(
-    film: &Film,
-    opts: &OutputOptions,
-    mut sink: impl FnMut(&[u8]) -> std::io::Result<()>,
-) -> std::io::Result<()> {
-    let per_sample = match opts.bit_depth {
+/// The bytes of one row of an RGB image of `width` pixels at `depth`.
+pub(super) fn row_bytes(width: u32, depth: BitDepth) -> usize {
+    let per_sample = match depth {
         BitDepth::Eight => 1,
         BitDepth::Sixteen => 2,
     };
-    let row_bytes = film.width as usize * 3 * per_sample;
-    let height = film.height as usize;
+    width as usize * 3 * per_sample
+}
+
+/// The integer file samples of `height` rows of `row_bytes` bytes, [`BAND_ROWS`]
+/// rows at a time (`row(y, dst)` fills row `y`), passed to `sink` top to bottom.
+fn integer_rows(
+    (row_bytes, height): (usize, usize),
+    row: impl Fn(usize, &mut [u8]) + Sync,
+    mut sink: impl FnMut(&[u8]) -> std::io::Result<()>,
+) -> std::io::Result<()> {
     let mut buf = vec![0u8; row_bytes * BAND_ROWS.min(height)];
     for first in (0..height).step_by(BAND_ROWS) {
         let rows = BAND_ROWS.min(height - first);
@@ -73,18 +79,24 @@ fn integer_rows(
         // A few `pow`s per sample: in parallel, each row the same whatever the threads.
         band.par_chunks_mut(row_bytes)
             .enumerate()
-            .for_each(|(j, dst)| encode_row(film.row((first + j) as u32), dst, opts));
+            .for_each(|(j, dst)| row(first + j, dst));
         sink(band)?;
     }
     Ok(())
 }
 
-/// An 8- or 16-bit RGB PNG, compressed as `image`'s PNG encoder does
+/// An 8- or 16-bit RGB PNG of `w`×`h` pixels whose rows `row` fills (as
+/// [`encode_row`] lays them out), compressed as `image`'s PNG encoder does
 /// (balanced deflate, adaptive filters), its rows streamed into the encoder.
-fn write_png(out: &mut impl Write, film: &Film, opts: &OutputOptions) -> EncodeResult {
-    let mut e = png::Encoder::new(out, film.width, film.height);
+pub(super) fn write_png(
+    out: &mut impl Write,
+    (w, h): (u32, u32),
+    depth: BitDepth,
+    row: impl Fn(usize, &mut [u8]) + Sync,
+) -> EncodeResult {
+    let mut e = png::Encoder::new(out, w, h);
     e.set_color(png::ColorType::Rgb);
-    e.set_depth(match opts.bit_depth {
+    e.set_depth(match depth {
         BitDepth::Eight => png::BitDepth::Eight,
         BitDepth::Sixteen => png::BitDepth::Sixteen,
     });
@@ -92,21 +104,30 @@ fn write_png(out: &mut impl Write, film: &Film, opts: &OutputOptions) -> EncodeR
     e.set_filter(png::Filter::Adaptive);
     let mut writer = e.write_header()?;
     let mut stream = writer.stream_writer_with_size(PNG_CHUNK)?;
-    integer_rows(film, opts, |band| stream.write_all(band))?;
+    integer_rows((row_bytes(w, depth), h as usize), row, |band| {
+        stream.write_all(band)
+    })?;
     stream.finish()?;
     writer.finish()?;
     Ok(())
 }
 
-/// A binary PPM (P6): maximum value 255 or 65535, 16-bit samples big-endian as
-/// the format requires.
-fn write_ppm(out: &mut impl Write, film: &Film, opts: &OutputOptions) -> EncodeResult {
-    let max = match opts.bit_depth {
+/// A binary PPM (P6) of `w`×`h` pixels whose rows `row` fills: maximum value
+/// 255 or 65535, 16-bit samples big-endian as the format requires.
+pub(super) fn write_ppm(
+    out: &mut impl Write,
+    (w, h): (u32, u32),
+    depth: BitDepth,
+    row: impl Fn(usize, &mut [u8]) + Sync,
+) -> EncodeResult {
+    let max = match depth {
         BitDepth::Eight => 255,
         BitDepth::Sixteen => 65535,
     };
-    write!(out, "P6\n{} {}\n{max}\n", film.width, film.height)?;
-    integer_rows(film, opts, |band| out.write_all(band))?;
+    write!(out, "P6\n{w} {h}\n{max}\n")?;
+    integer_rows((row_bytes(w, depth), h as usize), row, |band| {
+        out.write_all(band)
+    })?;
     Ok(())
 }
 
@@ -121,16 +142,21 @@ fn linear(v: f32, opts: &OutputOptions) -> f32 {
     }
 }
 
-/// A 32-bit float RGB OpenEXR file, written as `image`'s OpenEXR encoder
-/// writes one, each sample computed when the encoder asks for it.
-fn write_exr(out: &mut (impl Write + Seek), film: &Film, opts: &OutputOptions) -> EncodeResult {
+/// A 32-bit float RGB OpenEXR file of `w`×`h` pixels, pixel `i` (row-major)
+/// being `value(i)`, written as `image`'s OpenEXR encoder writes one, each
+/// sample computed when the encoder asks for it.
+pub(super) fn write_exr(
+    out: &mut (impl Write + Seek),
+    (w, h): (u32, u32),
+    value: impl Fn(usize) -> [f32; 3] + Sync,
+) -> EncodeResult {
     use exr::prelude::{Image, SpecificChannels, Vec2, WritableImage};
-    let (w, h) = (film.width as usize, film.height as usize);
+    let (w, h) = (w as usize, h as usize);
     Image::from_channels(
         (w, h),
         SpecificChannels::rgb(|p: Vec2<usize>| {
-            let c = film.pixels[p.flat_index_for_size(Vec2(w, h))];
-            (linear(c.x, opts), linear(c.y, opts), linear(c.z, opts))
+            let [r, g, b] = value(p.flat_index_for_size(Vec2(w, h)));
+            (r, g, b)
         }),
     )
     .write()
@@ -138,18 +164,17 @@ fn write_exr(out: &mut (impl Write + Seek), film: &Film, opts: &OutputOptions) -
     Ok(())
 }
 
-/// A Radiance RGBE file (its encoder takes the whole picture: one float copy).
-fn write_hdr(out: &mut impl Write, film: &Film, opts: &OutputOptions) -> EncodeResult {
-    let px: Vec<image::Rgb<f32>> = film
-        .pixels
-        .iter()
-        .map(|c| image::Rgb(c.to_array().map(|v| linear(v, opts))))
+/// A Radiance RGBE file of `w`×`h` pixels, pixel `i` being `value(i)` (its
+/// encoder takes the whole picture: one float copy).
+pub(super) fn write_hdr(
+    out: &mut impl Write,
+    (w, h): (u32, u32),
+    value: impl Fn(usize) -> [f32; 3],
+) -> EncodeResult {
+    let px: Vec<image::Rgb<f32>> = (0..w as usize * h as usize)
+        .map(|i| image::Rgb(value(i)))
         .collect();
-    image::codecs::hdr::HdrEncoder::new(out).encode(
-        &px,
-        film.width as usize,
-        film.height as usize,
-    )?;
+    image::codecs::hdr::HdrEncoder::new(out).encode(&px, w as usize, h as usize)?;
     Ok(())
 }
 

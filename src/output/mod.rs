@@ -3,9 +3,11 @@
 mod encode;
 mod format;
 mod gamma;
+mod samples;
 
 pub use format::{Format, ParseFormatError};
 pub use gamma::{decode_working, to_file, Gamma, ParseGammaError};
+pub use samples::{Samples, StoredImage};
 
 use crate::files;
 use crate::render::Film;

@@ -177,6 +177,16 @@ pub fn render_with(
     let (w, h) = (opts.width, opts.height);
     let crop = resolve_crop(settings, w, h);
     let (cw, ch) = (crop.x1 - crop.x0, crop.y1 - crop.y0);
+    // Passes that look at the whole picture before any pixel (the radiosity
+    // pretrace, the depth pass's farthest hit) cover the full image even when
+    // cropped, so a crop's pixels are the full render's (`rts render --shard`
+    // on a still relies on it).
+    let full = Crop {
+        x0: 0,
+        y0: 0,
+        x1: w,
+        y1: h,
+    };
     let sampling = settings.sampling;
     // Photons: shot first; radiosity's gathering sees their light too.
     let shot = match (world.global.photons, settings.pass) {
@@ -195,7 +205,7 @@ pub fn render_with(
         (Some(_), Pass::Beauty) if cw > 0 && ch > 0 => Some(radiosity::pretrace(
             world,
             (w, h),
-            &crop,
+            &full,
             (settings.seed, settings.frame),
             &mut pretrace_rays,
             progress,
@@ -225,7 +235,7 @@ pub fn render_with(
     };
     let max_depth = match settings.pass {
         Pass::Depth { max: Some(m) } => m,
-        Pass::Depth { max: None } => r.farthest_hit(&crop),
+        Pass::Depth { max: None } => r.farthest_hit(&full),
         _ => 0.0,
     };
     let r = Renderer { max_depth, ..r };

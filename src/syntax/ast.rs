@@ -24,8 +24,9 @@ pub struct File {
 pub enum Item {
     /// `#declare …`, `#if …`, … .
     Directive(Box<Directive>),
-    /// `keyword { items }`, e.g. `sphere { 0, 1 }`.
-    Block(Box<Block>),
+    /// `keyword { items }`, e.g. `sphere { 0, 1 }`. Shared, so a block kept
+    /// for later (a deferred pigment) costs no copy.
+    Block(std::rc::Rc<Block>),
     /// A bare keyword, e.g. `phong` in `finish { phong 0.8 }`.
     Keyword(Keyword),
     /// `[ items ]`, e.g. `[0.5 color Red]` in a `color_map`.
@@ -164,6 +165,11 @@ pub struct MacroDef {
     pub params: Vec<Param>,
     /// The items the macro expands to.
     pub body: Vec<Item>,
+    /// The body's text when its brackets balance only once its `#if`s are
+    /// decided (`#if (F) #write (H, "{" #else mesh2 { #end`): POV-Ray reads a
+    /// macro token by token as it runs. `body` is then empty and this text is
+    /// parsed at each call, after the `#if`s the call decides.
+    pub raw: Option<Span>,
 }
 
 /// `#debug`, `#warning` or `#error`.

@@ -82,6 +82,7 @@ pub const KEYWORDS: &[&str] = &[
     "direction",
     "disc",
     "dispersion",
+    "dispersion_samples",
     "dist_exp",
     "distance",
     "double_illuminate",

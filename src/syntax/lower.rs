@@ -20,6 +20,9 @@ pub struct Lowerer {
     pub offset: usize,
     /// Problems found while lowering (bad escapes, numbers, limits).
     pub diags: Vec<Diagnostic>,
+    /// Macro bodies the grammar saw blank, by offsets in the file (see
+    /// [`super::prepass::Marks::token_level`]).
+    pub token_level: Vec<(usize, usize)>,
 }
 
 type P<'i> = Pair<'i, Rule>;
@@ -82,7 +85,7 @@ impl Lowerer {
         let h = inner.next().expect("height");
         out.push(Item::Expr(Box::new(self.expr(h))));
         let items = self.items(inner);
-        out.push(Item::Block(Box::new(Block {
+        out.push(Item::Block(std::rc::Rc::new(Block {
             span: Span {
                 start: keyword.span.start,
                 ..span
@@ -96,7 +99,7 @@ impl Lowerer {
     fn item(&mut self, p: P) -> Item {
         let span = self.span(&p);
         match p.as_rule() {
-            Rule::block => Item::Block(Box::new(self.block(p))),
+            Rule::block => Item::Block(std::rc::Rc::new(self.block(p))),
             Rule::keyword => Item::Keyword(self.keyword(p)),
             Rule::bracket => {
                 let items = self.items(p.into_inner());
@@ -325,11 +328,18 @@ impl Lowerer {
                         _ => {}
                     }
                 }
+                let raw = self
+                    .token_level
+                    .iter()
+                    .copied()
+                    .find(|&(s, e)| s >= span.start as usize && e <= span.end as usize)
+                    .map(|(s, e)| Span::new(self.file, s, e));
                 DirectiveKind::Macro(Rc::new(MacroDef {
                     name: intern(n.as_str()),
                     name_span,
                     params,
                     body,
+                    raw,
                 }))
             }
             Rule::include_d => {

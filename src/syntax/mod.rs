@@ -32,7 +32,7 @@ pub fn parse(text: &str, file: FileId) -> (ast::File, Vec<Diagnostic>) {
 /// [`parse`] for `text` found at byte `base` of file `file` (a part of a larger
 /// file): every span of the tree and the diagnostics is the file's.
 pub fn parse_at(text: &str, file: FileId, base: usize) -> (ast::File, Vec<Diagnostic>) {
-    let (mut diags, data_bodies) = prepass::check_marking(text, file);
+    let (mut diags, marks) = prepass::check_marking(text, file);
     for d in &mut diags {
         d.shift(base);
     }
@@ -44,12 +44,21 @@ pub fn parse_at(text: &str, file: FileId, base: usize) -> (ast::File, Vec<Diagno
     // grammar skips them whole; the lowering scans them.
     let original = text;
     let marked;
-    let text = if data_bodies.is_empty() {
+    // Macro bodies read token by token at their calls are blanked (spaces,
+    // newlines kept): the grammar sees an empty body.
+    let text = if marks.data_bodies.is_empty() && marks.token_level.is_empty() {
         text
     } else {
         let mut bytes = text.as_bytes().to_vec();
-        for at in data_bodies {
+        for &at in &marks.data_bodies {
             bytes[at] = prepass::DATA_BODY;
+        }
+        for &(start, end) in &marks.token_level {
+            for b in &mut bytes[start..end] {
+                if *b != b'\n' {
+                    *b = b' ';
+                }
+            }
         }
         marked = String::from_utf8(bytes).unwrap_or_else(|_| text.to_string());
         marked.as_str()
@@ -59,6 +68,11 @@ pub fn parse_at(text: &str, file: FileId, base: usize) -> (ast::File, Vec<Diagno
         offset: base,
         // The prepass's warnings come first.
         diags,
+        token_level: marks
+            .token_level
+            .iter()
+            .map(|&(s, e)| (s + base, e + base))
+            .collect(),
     };
     match RtsParser::parse(Rule::file, text) {
         Ok(mut pairs) => {

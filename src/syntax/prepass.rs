@@ -38,6 +38,27 @@ struct Scanner<'a> {
     /// `{` it closes (`{` offset, `}` offset): where a block whose own `}` is
     /// missing most likely ends, when one stays open at the end.
     misindented: Option<(usize, usize)>,
+    /// The `#macro` being scanned: the offset of its `#`, its place in
+    /// `directives` and the bracket depth at its start.
+    open_macro: Option<(usize, usize, usize)>,
+    /// Macro bodies whose brackets balance only once their `#if` choices are
+    /// made (see [`Marks::token_level`]).
+    token_level: Vec<(usize, usize)>,
+}
+
+/// What [`check_marking`] finds besides the problems.
+#[derive(Debug, Default)]
+pub struct Marks {
+    /// The offsets of the `{` of every block body that holds nothing but two or
+    /// more plain numbers and vectors separated by commas.
+    pub data_bodies: Vec<usize>,
+    /// The bodies (from after the parameter list to the `#` of `#end`) of the
+    /// macros whose brackets do not balance as written, such as
+    /// `#if (F) #write (H, "{", #else mesh2 { #end`: POV-Ray reads a macro token by
+    /// token as it runs, so only the branches taken need to balance. The grammar
+    /// sees such a body as empty; it is parsed at each call, after the `#if`s
+    /// it can decide on entry are decided (see the evaluator's `token_level.rs`).
+    pub token_level: Vec<(usize, usize)>,
 }
 
 /// The marker the parser's copy of the text has in place of the `{` of a block
@@ -53,7 +74,7 @@ pub fn check(text: &str, file: FileId) -> Vec<Diagnostic> {
 /// but two or more plain numbers and vectors separated by commas (a mesh's
 /// `vertex_vectors { 3, <0,0,0>, … }`): the parser skips such a body at memory
 /// speed and the lowering reads it in one pass (see `data.rs`).
-pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Vec<usize>) {
+pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Marks) {
     let mut s = Scanner {
         bytes: text.as_bytes(),
         file,
@@ -67,9 +88,76 @@ pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Vec<usize>) 
         plain_open: None,
         data_bodies: Vec::new(),
         misindented: None,
+        open_macro: None,
+        token_level: Vec::new(),
     };
     s.run();
-    (s.diags, s.data_bodies)
+    (
+        s.diags,
+        Marks {
+            data_bodies: s.data_bodies,
+            token_level: s.token_level,
+        },
+    )
+}
+
+/// The offset of the `#` of the `#end` that closes `depth` open directives from
+/// `from` on (strings and comments skipped), if there is one.
+fn directive_end(b: &[u8], from: usize, mut depth: usize) -> Option<usize> {
+    let mut i = from;
+    while i < b.len() {
+        match b[i] {
+            b'/' if b.get(i + 1) == Some(&b'/') => {
+                while i < b.len() && b[i] != b'\n' {
+                    i += 1;
+                }
+            }
+            b'/' if b.get(i + 1) == Some(&b'*') => {
+                let mut open = 1;
+                i += 2;
+                while i < b.len() && open > 0 {
+                    if b[i] == b'/' && b.get(i + 1) == Some(&b'*') {
+                        open += 1;
+                        i += 2;
+                    } else if b[i] == b'*' && b.get(i + 1) == Some(&b'/') {
+                        open -= 1;
+                        i += 2;
+                    } else {
+                        i += 1;
+                    }
+                }
+            }
+            b'"' => {
+                i += 1;
+                while i < b.len() && !matches!(b[i], b'"' | b'\n') {
+                    i += if b[i] == b'\\' { 2 } else { 1 };
+                }
+                i += 1;
+            }
+            b'#' => {
+                let hash = i;
+                i += 1;
+                while i < b.len() && matches!(b[i], b' ' | b'\t') {
+                    i += 1;
+                }
+                let start = i;
+                while i < b.len() && is_word_byte(b[i]) {
+                    i += 1;
+                }
+                let word = std::str::from_utf8(&b[start..i]).unwrap_or("");
+                if OPENING_DIRECTIVES.contains(&word) {
+                    depth += 1;
+                } else if word == "end" {
+                    depth -= 1;
+                    if depth == 0 {
+                        return Some(hash);
+                    }
+                }
+            }
+            _ => i += 1,
+        }
+    }
+    None
 }
 
 /// The line of `text` holding byte `i`: its indentation (leading spaces and
@@ -177,8 +265,26 @@ impl Scanner<'_> {
                         return;
                     }
                 }
-                b'}' | b')' | b']' if !self.close(c, i) => {
-                    return;
+                b'}' | b')' | b']' => {
+                    let balances = match self.open_macro {
+                        Some((_, _, depth)) => {
+                            self.brackets.len() > depth
+                                && self
+                                    .brackets
+                                    .last()
+                                    .is_some_and(|&(o, _)| closer_for(o) == c)
+                        }
+                        None => true,
+                    };
+                    if !balances {
+                        if let Some(end) = self.token_level_macro(i) {
+                            i = end;
+                            continue;
+                        }
+                    }
+                    if !self.close(c, i) {
+                        return;
+                    }
                 }
                 b'<' => {
                     if matches!(
@@ -340,6 +446,27 @@ impl Scanner<'_> {
         end
     }
 
+    /// A bracket at `i` that does not balance inside the open macro: the
+    /// macro's body is read token by token at its calls (see
+    /// [`Marks::token_level`]). Returns where scanning goes on (the macro's
+    /// `#end`), or `None` outside a macro or when the macro never ends.
+    fn token_level_macro(&mut self, i: usize) -> Option<usize> {
+        let (hash, slot, depth) = self.open_macro?;
+        let open_above = self.directives.len() - slot;
+        let end = directive_end(self.bytes, i + 1, open_above)?;
+        self.brackets.truncate(depth);
+        self.directives.truncate(slot + 1);
+        self.plain_open = None;
+        self.data_bodies.retain(|&at| at < hash);
+        // The body starts after the parameter list.
+        let body = self.bytes[hash..i]
+            .iter()
+            .position(|&c| c == b')')
+            .map_or(i, |p| hash + p + 1);
+        self.token_level.push((body, end));
+        Some(end)
+    }
+
     fn close(&mut self, c: u8, i: usize) -> bool {
         match self.brackets.pop() {
             Some((open, at)) if closer_for(open) == c => {
@@ -410,11 +537,30 @@ impl Scanner<'_> {
         let span = self.span(hash, i);
         if let Some(name) = OPENING_DIRECTIVES.iter().find(|d| **d == word) {
             self.directives.push((name, hash, i));
+            if *name == "macro" && self.open_macro.is_none() {
+                self.open_macro = Some((hash, self.directives.len() - 1, self.brackets.len()));
+            }
             if self.directives.len() > MAX_NESTING {
                 self.too_deep(hash, i - hash, "directives");
                 return false;
             }
         } else if word == "end" {
+            if let Some((macro_hash, slot, depth)) = self.open_macro {
+                if slot + 1 == self.directives.len() {
+                    self.open_macro = None;
+                    if self.brackets.len() != depth {
+                        // The body leaves brackets open (or they were opened
+                        // in branches): read token by token at its calls.
+                        let body = self.bytes[macro_hash..hash]
+                            .iter()
+                            .position(|&c| c == b')')
+                            .map_or(hash, |p| macro_hash + p + 1);
+                        self.brackets.truncate(depth);
+                        self.data_bodies.retain(|&at| at < macro_hash);
+                        self.token_level.push((body, hash));
+                    }
+                }
+            }
             if self.directives.pop().is_none() {
                 self.diags.push(
                     Diagnostic::error(codes::STRAY_DIRECTIVE, span, "`#end` with nothing to close")

@@ -53,7 +53,8 @@ impl Curve {
 }
 
 /// Keywords valid in `camera_path { }`.
-const CAMERA_PATH_ITEMS: &[&str] = &["location", "look_at", "look_along", "angle", "roll", "sky"];
+pub(crate) const CAMERA_PATH_ITEMS: &[&str] =
+    &["location", "look_at", "look_along", "angle", "roll", "sky"];
 
 /// Samples per clock unit when following the right vector from the start.
 const WALK_STEPS_PER_UNIT: f64 = 512.0;

@@ -263,7 +263,7 @@ impl KeyKind {
 }
 
 /// Keywords valid in `keyframes { }`.
-const KEYFRAME_ITEMS: &[&str] = &[
+pub(crate) const KEYFRAME_ITEMS: &[&str] = &[
     "key",
     "rotate",
     "linear_spline",
@@ -279,7 +279,7 @@ const KEYFRAME_ITEMS: &[&str] = &[
 ];
 
 /// Keywords valid after a key's value.
-const KEY_ITEMS: &[&str] = &[
+pub(crate) const KEY_ITEMS: &[&str] = &[
     "ease_in",
     "ease_out",
     "ease_in_out",

@@ -11,7 +11,7 @@ use crate::span::Span;
 use std::rc::Rc;
 
 /// Keywords valid in `spline { }`.
-const SPLINE_ITEMS: &[&str] = &[
+pub(crate) const SPLINE_ITEMS: &[&str] = &[
     "linear_spline",
     "quadratic_spline",
     "cubic_spline",

@@ -20,7 +20,7 @@ use crate::scene::Timeline;
 use crate::span::Span;
 
 /// Keywords valid in `animation { }`.
-const ANIMATION_ITEMS: &[&str] = &[
+pub(crate) const ANIMATION_ITEMS: &[&str] = &[
     "frames",
     "fps",
     "duration",

@@ -36,7 +36,7 @@ pub(crate) enum Tok {
 #[derive(Debug)]
 pub(crate) struct Deferred {
     /// The block as written.
-    pub(crate) block: crate::syntax::ast::Block,
+    pub(crate) block: std::rc::Rc<crate::syntax::ast::Block>,
     /// The local scopes (not the global one) in force where it is written.
     pub(crate) locals: Vec<super::scope::Frame>,
     /// The macro and include chain where it is written.

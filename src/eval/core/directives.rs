@@ -477,9 +477,13 @@ impl Evaluator<'_> {
             let iv = self.expr(e)?;
             idx.push((self.to_float(&iv, e.span)?, e.span));
         }
-        let unknown = self.unknown_identifier(target.name, target.name_span);
+        if self.scope.get(target.name).is_none() {
+            return Err(self
+                .unknown_identifier(target.name, target.name_span)
+                .into());
+        }
         let Some(binding) = self.scope.get_mut(target.name) else {
-            return Err(unknown.into());
+            return Err(Fail::silent());
         };
         let Value::Array(arr) = &mut binding.value else {
             let kind = binding.value.kind();
@@ -524,7 +528,7 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    fn is_defined(&mut self, target: &LValue) -> R<bool> {
+    pub(crate) fn is_defined(&mut self, target: &LValue) -> R<bool> {
         if target.name.is_builtin() {
             return Ok(true);
         }

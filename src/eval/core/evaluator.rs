@@ -110,6 +110,9 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) default_stamp: u64,
     /// Units evaluated once for all frames (see `reuse.rs`).
     pub(crate) reuse: super::reuse::Reuse,
+    /// Bodies of macros read token by token, parsed at their calls (see
+    /// `token_level.rs`).
+    pub(crate) token_bodies: super::token_level::TokenBodies,
 }
 
 /// The longest include/macro chain shown in full: the innermost and outermost steps
@@ -202,6 +205,7 @@ impl<'a> Evaluator<'a> {
             unit_diags: None,
             default_stamp: 0,
             reuse: super::reuse::Reuse::new(records),
+            token_bodies: Default::default(),
         }
     }
 

@@ -100,7 +100,7 @@ impl Evaluator<'_> {
                     && matches!(b.keyword.name, "pigment" | "finish" | "normal") =>
             {
                 out.push(Tok::Deferred(Rc::new(super::cursor::Deferred {
-                    block: (**b).clone(),
+                    block: b.clone(),
                     locals: self.scope.locals(),
                     trace: self.trace.clone(),
                 })));
@@ -397,7 +397,13 @@ impl Evaluator<'_> {
             span: call,
             message: format!("in macro `{}` called here", m.name),
         });
-        self.expand(&m.body, out);
+        match m.raw {
+            None => self.expand(&m.body, out),
+            Some(raw) => match self.token_level_body(m, raw) {
+                Ok(body) => self.expand(&body, out),
+                Err(f) => self.report(f),
+            },
+        }
         self.trace.pop();
         self.macro_depth -= 1;
         let mut frame = self.scope.take_top();

@@ -345,7 +345,23 @@ impl Evaluator<'_> {
         self.options.lazy_library
             && self.sources.get(id).name.starts_with("<stdlib>/")
             && self.macro_depth == 0
-            && self.scope.depth() == 1
+    }
+
+    /// Whether a piece the file would leave pending mentions a name that is
+    /// local where the `#include` stands (in an include file's or a macro's
+    /// scope): evaluated later, it would not see that local, so the file is
+    /// read at the `#include` instead.
+    fn mentions_locals(&self, pieces: &[Piece]) -> bool {
+        pieces.iter().any(|p| match p {
+            Piece::Named { name, words, .. } => {
+                self.scope.is_local(intern(name))
+                    || words.iter().any(|w| self.scope.is_local(intern(w)))
+            }
+            Piece::Guard { name, inner } => {
+                self.scope.is_local(intern(name)) || self.mentions_locals(inner)
+            }
+            Piece::Eager { .. } => false,
+        })
     }
 
     /// `#include` of the library file `id` on demand; false when it must be
@@ -367,6 +383,9 @@ impl Evaluator<'_> {
         let Some(pieces) = pieces else {
             return false;
         };
+        if self.scope.depth() > 1 && self.mentions_locals(&pieces) {
+            return false;
+        }
         self.include_stack.push(id);
         self.run_pieces(id, &pieces, out);
         self.include_stack.pop();
@@ -575,6 +594,44 @@ mod library {
             .collect();
         g.sort();
         g
+    }
+
+    /// A library included from an include file that has a local of a name
+    /// the library declares: read at the `#include` (as POV-Ray does, its
+    /// `#declare` then updates that local, and no global is left), not on
+    /// demand (which would leave a global).
+    #[test]
+    fn a_library_included_where_its_names_are_local_is_read_at_the_include() {
+        let dir = std::env::temp_dir().join(format!("rts-lazy-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temp dir");
+        std::fs::write(
+            dir.join("user.inc"),
+            "#local Gray50 = rgb <1, 0, 0>;\n#include \"colors.inc\"\n",
+        )
+        .expect("write");
+        let main = dir.join("main.rts");
+        let text = "#include \"user.inc\"\n\
+                    #ifdef (Gray50) #declare Got_ = 1; #else #declare Got_ = 0; #end\n"
+            .to_string();
+        std::fs::write(&main, &text).expect("write");
+        let run = |lazy: bool| {
+            let mut sources = SourceMap::new();
+            let id = sources.add(main.display().to_string(), Some(main.clone()), text.clone());
+            let (file, _) = crate::syntax::parse(&text, id);
+            let options = EvalOptions {
+                lazy_library: lazy,
+                ..EvalOptions::default()
+            };
+            let e = eval(&file, id, &mut sources, &options);
+            e.globals
+                .into_iter()
+                .find(|d| d.name == "Got_")
+                .and_then(|d| d.value)
+        };
+        let (a, b) = (run(false), run(true));
+        let _ = std::fs::remove_dir_all(&dir);
+        assert_eq!(a.as_deref(), Some("0"));
+        assert_eq!(a, b);
     }
 
     #[test]

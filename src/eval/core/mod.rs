@@ -24,6 +24,7 @@ pub(crate) mod lazy;
 pub(crate) mod list;
 pub(crate) mod reuse;
 pub(crate) mod scope;
+pub(crate) mod token_level;
 pub(crate) mod trace;
 pub(crate) mod transforms;
 pub mod value;

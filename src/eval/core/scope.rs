@@ -357,6 +357,15 @@ impl Scopes {
         }
     }
 
+    /// Whether `name` is bound in a local scope (a macro's or an include
+    /// file's).
+    pub(crate) fn is_local(&self, name: Sym) -> bool {
+        // The innermost binding tells (a journal notes it as read).
+        let found = self.find(name);
+        self.note_read(found, name, false);
+        self.frames[1..].iter().any(|f| f.contains_key(&name))
+    }
+
     /// How many scopes are open (1: only the global one).
     pub(crate) fn depth(&self) -> usize {
         self.frames.len()

@@ -10,79 +10,38 @@ use crate::eval::materials::normal::normal_items;
 use crate::eval::materials::pigment::pigment_items;
 use crate::eval::materials::texture::texture_items;
 use crate::eval::objects::modifiers::OBJECT_MODIFIERS;
+use crate::eval::objects::object::OBJECT_BLOCKS;
 use crate::eval::settings::atmosphere::{FOG_ITEMS, SKY_ITEMS};
 use crate::eval::settings::camera::{CAMERA_ITEMS, GLOBAL_ITEMS};
 use crate::eval::settings::lights::LIGHT_ITEMS;
 
-/// Blocks that stand at top level: objects, camera, lights and scene settings.
-pub const TOP_LEVEL_KEYWORDS: &[&str] = &[
+/// Blocks that stand at top level besides the objects: the camera, lights,
+/// atmosphere, scene settings and the animation timeline.
+const TOP_LEVEL_SETTINGS: &[&str] = &[
+    "animation",
     "background",
-    "bicubic_patch",
-    "box",
     "camera",
-    "cone",
-    "cubic",
-    "cylinder",
-    "difference",
-    "disc",
+    "camera_path",
     "fog",
     "global_settings",
-    "height_field",
-    "intersection",
-    "julia_fractal",
     "light_source",
-    "merge",
-    "mesh",
-    "mesh2",
-    "object",
-    "plane",
-    "poly",
-    "polygon",
-    "prism",
-    "quadric",
-    "quartic",
+    "media",
     "rainbow",
     "sky_sphere",
-    "smooth_triangle",
-    "sphere",
-    "sphere_sweep",
-    "text",
-    "torus",
-    "triangle",
-    "union",
 ];
 
-/// Object blocks (shapes and CSG), which take [`OBJECT_MODIFIERS`] after their
-/// parameters.
-const OBJECTS: &[&str] = &[
-    "bicubic_patch",
-    "box",
-    "cone",
-    "cubic",
-    "cylinder",
-    "difference",
-    "disc",
-    "height_field",
-    "intersection",
-    "julia_fractal",
-    "merge",
-    "mesh",
-    "mesh2",
-    "object",
-    "plane",
-    "poly",
-    "polygon",
-    "prism",
-    "quadric",
-    "quartic",
-    "smooth_triangle",
-    "sphere",
-    "sphere_sweep",
-    "text",
-    "torus",
-    "triangle",
-    "union",
-];
+/// Blocks that stand at top level: every object block the evaluator reads
+/// ([`OBJECT_BLOCKS`]) and [`TOP_LEVEL_SETTINGS`], sorted.
+pub fn top_level_keywords() -> Vec<&'static str> {
+    let mut v: Vec<&'static str> = OBJECT_BLOCKS
+        .iter()
+        .chain(TOP_LEVEL_SETTINGS)
+        .copied()
+        .collect();
+    v.sort_unstable();
+    v.dedup();
+    v
+}
 
 /// The keywords valid among the items of a `block { … }`; `None` when the block is not
 /// one rts evaluates. For object blocks this includes the objects a CSG block may
@@ -135,15 +94,34 @@ pub fn block_keywords(block: &str) -> Option<Vec<&'static str>> {
             v
         }
         "julia_fractal" => crate::eval::objects::shapes_more::JULIA_ITEMS.to_vec(),
+        "lathe" | "sor" => crate::eval::objects::revolve::LATHE_ITEMS.to_vec(),
+        "isosurface" => crate::eval::objects::isosurface::ISOSURFACE_ITEMS.to_vec(),
+        "blob" => vec!["threshold", "sphere", "cylinder", "hierarchy"],
+        "material" => crate::eval::materials::material_block::MATERIAL_ITEMS.to_vec(),
+        "subsurface" => crate::eval::materials::subsurface::SUBSURFACE_ITEMS.to_vec(),
+        "image_pattern" => crate::eval::materials::pattern_blocks::IMAGE_PATTERN_ITEMS.to_vec(),
+        "slope" => crate::eval::materials::pattern_blocks::SLOPE_ITEMS.to_vec(),
+        "photons" => {
+            use crate::eval::settings::photons;
+            let mut v = photons::GLOBAL_ITEMS.to_vec();
+            v.extend_from_slice(photons::OBJECT_ITEMS);
+            v.extend_from_slice(photons::LIGHT_ITEMS);
+            v
+        }
+        "animation" => crate::eval::animation::timeline::ANIMATION_ITEMS.to_vec(),
+        "camera_path" => crate::eval::animation::camera_path::CAMERA_PATH_ITEMS.to_vec(),
+        "keyframes" => crate::eval::animation::keyframe::KEYFRAME_ITEMS.to_vec(),
+        "key" => crate::eval::animation::keyframe::KEY_ITEMS.to_vec(),
+        "spline" => crate::eval::animation::spline::SPLINE_ITEMS.to_vec(),
         "sphere_sweep" => crate::eval::objects::shapes_more::SWEEP_ITEMS.to_vec(),
-        "clipped_by" | "bounded_by" => OBJECTS.to_vec(),
-        "union" | "merge" | "intersection" | "difference" => OBJECTS.to_vec(),
-        "looks_like" | "projected_through" => OBJECTS.to_vec(),
-        k if OBJECTS.contains(&k) => Vec::new(),
+        "clipped_by" | "bounded_by" => OBJECT_BLOCKS.to_vec(),
+        "union" | "merge" | "intersection" | "difference" => OBJECT_BLOCKS.to_vec(),
+        "looks_like" | "projected_through" => OBJECT_BLOCKS.to_vec(),
+        k if OBJECT_BLOCKS.contains(&k) => Vec::new(),
         k if is_evaluated_block(k) => return None,
         _ => return None,
     };
-    if OBJECTS.contains(&block) {
+    if OBJECT_BLOCKS.contains(&block) {
         out.extend_from_slice(OBJECT_MODIFIERS);
     }
     if block == "texture" || block == "pigment" {

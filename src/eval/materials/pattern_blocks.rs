@@ -31,7 +31,7 @@ pub(crate) const IMAGE_PATTERN_ITEMS: &[&str] = &[
 ];
 
 /// What `slope { }` accepts after its direction.
-const SLOPE_ITEMS: &[&str] = &["altitude"];
+pub(crate) const SLOPE_ITEMS: &[&str] = &["altitude"];
 
 /// An image block being read: the file, the projection and what it reads.
 struct ImageSpec {

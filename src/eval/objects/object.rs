@@ -9,8 +9,9 @@ use crate::scene::{CsgOp, Members, Object, Shape, Transform};
 use crate::span::Span;
 use std::sync::Arc;
 
-/// The keywords of object blocks (their items may modify the object's texture).
-pub(crate) const OBJECT_BLOCKS: &[&str] = &[
+/// The keywords of object blocks (their items may modify the object's texture):
+/// every shape and CSG block the evaluator reads. Editors offer these.
+pub const OBJECT_BLOCKS: &[&str] = &[
     "sphere",
     "light_group",
     "plane",

@@ -240,6 +240,10 @@ fn render_box(
 const SPLAT_A: f64 = -1.0 / (2.0 * GAUSSIAN_SIGMA * GAUSSIAN_SIGMA);
 /// Pixels on each side a splatted sample reaches.
 const SPLAT_REACH: usize = 2;
+/// Pixels on each side of its own that a sample can change (through the
+/// Gaussian filter's splat): a band of rows rendered with this many more rows
+/// above and below holds the full image's values in its middle.
+pub const FILTER_REACH: u32 = SPLAT_REACH as u32;
 /// Pixels across a splat.
 const SPLAT_WIDTH: usize = 2 * SPLAT_REACH + 1;
 
