@@ -111,11 +111,28 @@ pub fn build(scene: &Scene) -> World {
     build_cached(scene, &mut BuildCache::default())
 }
 
-/// Mesh hierarchies kept from one build to the next (the frames of an animation):
-/// a mesh that is the same `Arc` as in the previous build keeps its BVH.
+/// Hierarchies kept from one build to the next (the frames of an animation):
+/// a mesh that is the same `Arc` as in the previous build keeps its BVH, and
+/// the hierarchy over the primitives is kept while their bounds are the same
+/// bits in the same order (objects that do not move, seen by a moving camera).
 #[derive(Default)]
 pub struct BuildCache {
     meshes: FxHashMap<usize, Arc<MeshAccel>>,
+    /// The bounded primitives of the previous build and its hierarchy.
+    top: Option<(Vec<(u32, Aabb)>, Bvh)>,
+}
+
+/// Whether two lists of primitive bounds are the same bits (a hierarchy built
+/// over one is the hierarchy built over the other).
+fn same_bounds(a: &[(u32, Aabb)], b: &[(u32, Aabb)]) -> bool {
+    let bits = |x: &Aabb| {
+        let (lo, hi) = (x.min.to_array(), x.max.to_array());
+        [lo, hi].map(|v| v.map(f64::to_bits))
+    };
+    a.len() == b.len()
+        && a.iter()
+            .zip(b)
+            .all(|((i, x), (j, y))| i == j && bits(x) == bits(y))
 }
 
 /// [`build`], reusing the mesh hierarchies of the previous build in `cache`.
@@ -147,8 +164,12 @@ pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
         .enumerate()
         .filter_map(|(i, p)| p.bounds.map(|b| (i as u32, b)))
         .collect();
-    let bvh = Bvh::build(&items);
+    let bvh = match cache.top.take() {
+        Some((old, bvh)) if same_bounds(&old, &items) => bvh,
+        _ => Bvh::build(&items),
+    };
     let unbounded = (items.len() as u32..prims.len() as u32).collect();
+    cache.top = Some((items, bvh.clone()));
     let translucent = transparency::translucent(&prims);
     let with_media = |i: &Option<Arc<Interior>>| i.as_ref().is_some_and(|i| !i.media.is_empty());
     let object_media = prims.iter().any(|p| {

@@ -143,6 +143,11 @@ pub struct RenderArgs {
     /// Instants averaged for motion blur (default 8).
     #[arg(help_heading = "Animation", long, value_name = "N")]
     pub motion_samples: Option<u32>,
+    /// Evaluate every item of the scene for every frame, instead of reusing
+    /// what the items the clock does not touch did in the first frame (same
+    /// pictures; for comparison).
+    #[arg(help_heading = "Animation", long)]
+    pub no_eval_cache: bool,
     /// Render only the pixels X0..X1 × Y0..Y1 (0-based, ends excluded, top-left
     /// origin); the output image has the region's size.
     #[arg(help_heading = "Output", long, value_name = "X0,Y0,X1,Y1")]
@@ -387,6 +392,7 @@ pub fn run(args: &RenderArgs) -> i32 {
         // A render runs the scene's #write directives for real.
         Ok(o) => rts::eval::EvalOptions {
             write_files: true,
+            reuse: !args.no_eval_cache,
             ..o
         },
         Err(e) => return usage(e),

@@ -424,6 +424,9 @@ pub fn run(
     // The same after the first frame rendered (which reads mesh files and builds
     // their hierarchies once for the whole run).
     let (mut t_rest, mut t_trace_rest) = (Duration::ZERO, Duration::ZERO);
+    // Of the time outside tracing: evaluating and building, and waiting for
+    // the writer to take the frame.
+    let (mut t_prep_rest, mut t_wait_rest) = (Duration::ZERO, Duration::ZERO);
     let n = mine.len();
     let key = man.key.clone();
     // Frames are encoded and written (with the manifest) on a second thread while
@@ -473,10 +476,13 @@ pub fn run(
             };
             let out = r.output_options(img.assumed_gamma, img.gamma_off);
             let t_render = img.t_render;
+            let t_prep = img.t_eval + img.t_build;
+            let t_send = Instant::now();
             if tx.send((f, path.clone(), img.film, out)).is_err() {
                 // The writer stopped on an error, reported below.
                 break;
             }
+            let t_wait = t_send.elapsed();
             rendered += 1;
             let dt = tf.elapsed();
             t_frames += dt;
@@ -484,6 +490,8 @@ pub fn run(
             if rendered > 1 {
                 t_rest += dt;
                 t_trace_rest += t_render;
+                t_prep_rest += t_prep;
+                t_wait_rest += t_wait;
             }
             if show {
                 let left = n - k - 1;
@@ -528,9 +536,12 @@ pub fn run(
         };
         let outside = share(t_trace, t_frames);
         let later = if rendered > 1 {
+            let part = |t: Duration| 100.0 * t.as_secs_f64() / t_rest.as_secs_f64().max(1e-9);
             format!(
-                ", {:.1}% after the first frame",
-                share(t_trace_rest, t_rest)
+                ", {:.1}% after the first frame: {:.1}% evaluating and building, {:.1}% waiting to write frames",
+                share(t_trace_rest, t_rest),
+                part(t_prep_rest),
+                part(t_wait_rest)
             )
         } else {
             String::new()

@@ -10,7 +10,9 @@
 //! - `core/`: the language itself: the `Evaluator`
 //!   and the context of the block being read, the cursor over a block's
 //!   evaluated items, item expansion and macros, directives, expressions,
-//!   values, scopes, `#include`, file I/O, built-ins and budgets;
+//!   values, scopes, `#include`, file I/O, built-ins and budgets, and the
+//!   reuse of top-level items the clock does not touch from one frame to the
+//!   next (`reuse.rs`);
 //! - `objects/`: readers of shapes, CSG and object modifiers, meshes (mesh2,
 //!   import), revolved shapes, blobs, text and isosurfaces;
 //! - `materials/`: readers of textures, pigments, normals, finishes, interiors,
@@ -122,6 +124,11 @@ pub struct EvalOptions {
     /// Largest `#include`d file, and file `#fopen` reads, in bytes
     /// (`--max-source-size`).
     pub max_source_size: u64,
+    /// In an animation (`clock_on`), whether [`eval_cached`] reuses what the
+    /// top-level items the clock does not touch did in an earlier frame
+    /// instead of evaluating them again (same scene; `--no-eval-cache` turns
+    /// it off).
+    pub reuse: bool,
 }
 
 impl Default for EvalOptions {
@@ -155,6 +162,7 @@ impl Default for EvalOptions {
             lazy_library: true,
             max_write: 256 << 20,
             max_source_size: MAX_SOURCE_SIZE,
+            reuse: true,
         }
     }
 }
@@ -188,13 +196,18 @@ pub struct Declared {
 /// frames of an animation): parsed include files, meshes read from files, and
 /// meshes by content, so geometry that does not change keeps the same `Arc` (and
 /// with it its BVH, see [`crate::build::BuildCache`]) from frame to frame; and
-/// decoded images, read again only when their file changes.
+/// decoded images, read again only when their file changes; and, in an
+/// animation ([`EvalOptions::reuse`]), what each top-level item the clock does
+/// not touch did, replayed instead of evaluating the item again (the same
+/// parsed file must be evaluated each time; other options than the clock's
+/// make it forget).
 #[derive(Default)]
 pub struct EvalCache {
     parsed_includes: rustc_hash::FxHashMap<FileId, Option<std::rc::Rc<ast::File>>>,
     pub(crate) meshes: objects::mesh_cache::MeshCache,
     images: self::core::images::ImageCache,
     data_files: std::collections::BTreeSet<PathBuf>,
+    records: self::core::reuse::Records,
 }
 
 impl EvalCache {
@@ -207,6 +220,12 @@ impl EvalCache {
     /// size and modification time stay the same, however often it is used.
     pub fn images_decoded(&self) -> u64 {
         self.images.decoded()
+    }
+
+    /// Top-level items (units) reused from an earlier evaluation instead of
+    /// evaluated, and evaluated, over all evaluations so far.
+    pub fn units(&self) -> (u64, u64) {
+        (self.records.replayed, self.records.evaluated)
     }
 }
 
@@ -241,6 +260,7 @@ pub fn eval_cached(
         }
     }
     ev.partial = !file.unparsed.is_empty();
+    ev.start_units();
     ev.run_top(&file.items);
     ev.finish_run(cache)
 }

@@ -195,6 +195,7 @@ impl Evaluator<'_> {
             .into());
         };
         let tl = self.timeline();
+        self.moving();
         let t = self.options.clock;
         let t0 = tl.initial_clock.min(t);
         let span = (tl.final_clock - tl.initial_clock).abs().max(1e-6);

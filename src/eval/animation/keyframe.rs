@@ -291,6 +291,7 @@ impl Evaluator<'_> {
     /// `keyframes { … }`: the keyed value at the current clock.
     pub(crate) fn keyframes_block(&mut self, c: &mut Cursor) -> R<Value> {
         let (k, kind) = self.keyframes(c)?;
+        self.moving();
         let v = k.eval(self.options.clock);
         Ok(match kind {
             KeyKind::Float => Value::Float(v[0]),

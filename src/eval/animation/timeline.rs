@@ -36,6 +36,7 @@ impl Evaluator<'_> {
     /// The timeline keyframes refer to: the command line's, else the scene's
     /// `animation { }` read so far, else the default (frames 1…1, clock 0…1).
     pub(crate) fn timeline(&self) -> Timeline {
+        self.moving();
         self.options
             .timeline
             .clone()
@@ -46,6 +47,7 @@ impl Evaluator<'_> {
     /// Whether the scene is being evaluated with a timeline (from the command
     /// line or an `animation { }` already read).
     pub(crate) fn has_timeline(&self) -> bool {
+        self.moving();
         self.options.timeline.is_some() || self.scene.animation.is_some()
     }
 

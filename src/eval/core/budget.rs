@@ -190,6 +190,9 @@ impl Evaluator<'_> {
     /// whose body fails on every pass ends there. Returns whether it was
     /// recorded.
     pub(crate) fn record(&mut self, d: Diagnostic) -> bool {
+        if let Some(v) = &mut self.unit_diags {
+            v.push(d.clone());
+        }
         let mut h = rustc_hash::FxHasher::default();
         d.code.hash(&mut h);
         d.span.hash(&mut h);

@@ -16,7 +16,22 @@ impl Evaluator<'_> {
     /// The value of built-in constant `index`.
     pub(crate) fn builtin_constant(&self, index: usize) -> Value {
         let o = self.options;
-        Value::Float(match BUILTIN_NAMES[index] {
+        let name = BUILTIN_NAMES[index];
+        if matches!(
+            name,
+            "clock"
+                | "clock_delta"
+                | "clock_on"
+                | "frame_number"
+                | "initial_frame"
+                | "final_frame"
+                | "initial_clock"
+                | "final_clock"
+        ) {
+            // A per-frame value (see `reuse.rs`).
+            self.moving();
+        }
+        Value::Float(match name {
             "pi" => std::f64::consts::PI,
             "tau" => std::f64::consts::TAU,
             "x" => return v3(1.0, 0.0, 0.0),

@@ -102,6 +102,14 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) partial: bool,
     /// Built-in library items not evaluated yet (see `lazy.rs`).
     pub(crate) pending: super::lazy::Pending,
+    /// The unit being evaluated read a per-frame value (see `reuse.rs`).
+    pub(crate) moving: std::cell::Cell<bool>,
+    /// What the unit being evaluated reported (see `reuse.rs`).
+    pub(crate) unit_diags: Option<Vec<Diagnostic>>,
+    /// Changes with each `#default` (see `reuse.rs`).
+    pub(crate) default_stamp: u64,
+    /// Units evaluated once for all frames (see `reuse.rs`).
+    pub(crate) reuse: super::reuse::Reuse,
     /// Bodies of macros read token by token, parsed at their calls (see
     /// `token_level.rs`).
     pub(crate) token_bodies: super::token_level::TokenBodies,
@@ -152,10 +160,17 @@ impl<'a> Evaluator<'a> {
         let scene_dir = sources.get(file_id).dir().map(PathBuf::from);
         cache.meshes.begin();
         cache.images.begin();
+        let mut records = std::mem::take(&mut cache.records);
+        let on = options.reuse && options.clock_on;
+        if on {
+            records.begin(options);
+        }
+        let scope = Scopes::new();
+        scope.next_stamp.set(records.next_stamp.max(1));
         Evaluator {
             sources,
             options,
-            scope: Scopes::new(),
+            scope,
             diags: Vec::new(),
             scene: Scene::default(),
             camera_seen: None,
@@ -186,8 +201,18 @@ impl<'a> Evaluator<'a> {
             spent: Spent::start(),
             partial: false,
             pending: Default::default(),
+            moving: Default::default(),
+            unit_diags: None,
+            default_stamp: 0,
+            reuse: super::reuse::Reuse::new(records),
             token_bodies: Default::default(),
         }
+    }
+
+    /// Turns units on (after the command line's definitions) when the options
+    /// ask for them (see `reuse.rs`).
+    pub(crate) fn start_units(&mut self) {
+        self.reuse.on = self.options.reuse && self.options.clock_on;
     }
 
     /// Closes what the scene left open, gives `cache` what the next evaluation
@@ -201,6 +226,8 @@ impl<'a> Evaluator<'a> {
         cache.images = std::mem::take(&mut self.images);
         cache.images.end();
         cache.data_files.extend(self.data_files.take());
+        self.reuse.records.next_stamp = self.scope.next_stamp.get();
+        cache.records = std::mem::take(&mut self.reuse.records);
         self.finish_scene()
     }
 
@@ -239,7 +266,16 @@ impl<'a> Evaluator<'a> {
                 );
                 continue;
             }
+            self.moving.set(false);
             self.run_top(&file.items);
+            // The same definition gives the same value in every frame unless
+            // it reads the clock (see `reuse.rs`).
+            if !self.moving.get() {
+                let mut h = rustc_hash::FxHasher::default();
+                std::hash::Hash::hash(&(&name, &value), &mut h);
+                let stamp = std::hash::Hasher::finish(&h) | 1 << 63;
+                self.scope.set_stamp(0, crate::syntax::intern(&name), stamp);
+            }
         }
     }
 

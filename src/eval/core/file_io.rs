@@ -65,6 +65,7 @@ impl Evaluator<'_> {
         file: &Expr,
         mode: OpenMode,
     ) -> R<()> {
+        self.moving();
         if name.is_builtin() {
             return Err(self.reserved(name_span, &name.name()));
         }
@@ -134,6 +135,7 @@ impl Evaluator<'_> {
     /// `#fclose NAME`. Closing a file already closed at the end of its data is
     /// allowed, as in POV-Ray.
     pub(crate) fn fclose(&mut self, name: Sym, span: Span) -> R<()> {
+        self.moving();
         match self.scope.get(name).map(|b| b.value.clone()) {
             Some(Value::File(f)) => {
                 self.close_file(&f, span)?;
@@ -148,6 +150,7 @@ impl Evaluator<'_> {
 
     /// `#read (NAME, VAR, …)`.
     pub(crate) fn read_values(&mut self, name: Sym, span: Span, targets: &[LValue]) -> R<()> {
+        self.moving();
         let f = self.file_value(name, span)?;
         for t in targets {
             let item = {
@@ -192,6 +195,7 @@ impl Evaluator<'_> {
         span: Span,
         items: &[(Option<BinaryKind>, Expr)],
     ) -> R<()> {
+        self.moving();
         let f = self.file_value(name, span)?;
         let mut out = Vec::new();
         for (kind, e) in items {
@@ -376,6 +380,7 @@ impl Evaluator<'_> {
     /// Finds a file to read (written ones first, then the include search folders)
     /// and reads it whole.
     fn read_whole(&mut self, name: &str, span: Span) -> R<(PathBuf, Rc<[u8]>)> {
+        self.moving();
         if let Some(found) = self.overlay_find(name) {
             return Ok(found);
         }
@@ -415,6 +420,7 @@ impl Evaluator<'_> {
         if self.written.is_empty() {
             return None;
         }
+        self.moving();
         self.search_dirs(name)
             .iter()
             .filter_map(|d| overlay_key(d, name))

@@ -19,22 +19,39 @@ impl Evaluator<'_> {
 
     /// Expands items into `out`, running directives as they come.
     pub(crate) fn expand(&mut self, items: &[Item], out: &mut Sink) {
-        let mut rest = items.iter();
-        while let Some(item) = rest.next() {
+        let mut rest = items;
+        while let Some(item) = rest.first() {
             if self.stopped {
                 return;
             }
-            self.expand_item(item, out);
             // `#declare T = texture { A } texture { B } …`: one layered texture (B
             // over A), as POV-Ray reads the blocks that follow a declared texture.
-            if let Some((local, target)) = declared_texture(item) {
-                while let Some(Item::Block(next)) = rest.clone().next() {
+            let mut n = 1;
+            if declared_texture(item).is_some() {
+                while let Some(Item::Block(next)) = rest.get(n) {
                     if next.keyword.name != "texture" {
                         break;
                     }
-                    rest.next();
-                    if let Err(f) = self.layer_declared(local, target, next) {
-                        self.report(f);
+                    n += 1;
+                }
+            }
+            let (unit, after) = rest.split_at(n);
+            rest = after;
+            // A top-level item is evaluated once for all frames when the clock
+            // does not touch it (see `reuse.rs`).
+            if out.top && self.is_unit(item) {
+                self.unit(item.span(), |ev| ev.expand_unit(unit, out));
+                continue;
+            }
+            // (The same as `expand_unit`, written here to keep deep macro
+            // recursion from using more stack.)
+            self.expand_item(item, out);
+            if let Some((local, target)) = declared_texture(item) {
+                for next in &unit[1..] {
+                    if let Item::Block(next) = next {
+                        if let Err(f) = self.layer_declared(local, target, next) {
+                            self.report(f);
+                        }
                     }
                 }
             }
@@ -43,6 +60,30 @@ impl Evaluator<'_> {
                 for t in toks {
                     self.place(t);
                 }
+            }
+        }
+    }
+
+    /// Expands an item and the texture blocks layered over it, and places
+    /// what they produce when `out` is the top level.
+    fn expand_unit(&mut self, unit: &[Item], out: &mut Sink) {
+        let Some((item, layers)) = unit.split_first() else {
+            return;
+        };
+        self.expand_item(item, out);
+        if let Some((local, target)) = declared_texture(item) {
+            for next in layers {
+                if let Item::Block(next) = next {
+                    if let Err(f) = self.layer_declared(local, target, next) {
+                        self.report(f);
+                    }
+                }
+            }
+        }
+        if out.top {
+            let toks = std::mem::take(&mut out.toks);
+            for t in toks {
+                self.place(t);
             }
         }
     }

@@ -56,8 +56,13 @@ pub(crate) enum Piece {
 }
 
 /// Items of library files not evaluated yet, and who mentions which name.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub(crate) struct Pending {
+    /// A hash of every change made so far: two evaluations whose changes hash
+    /// the same have the same pending items (see `reuse.rs`).
+    pub(crate) state: u64,
+    /// Set whenever the pending items are looked at or changed (see `reuse.rs`).
+    pub(crate) touched: std::cell::Cell<bool>,
     /// The pending item binding each name.
     by_name: FxHashMap<Sym, usize>,
     /// The pending items mentioning each name.
@@ -70,6 +75,7 @@ pub(crate) struct Pending {
     forcing: Vec<Sym>,
 }
 
+#[derive(Clone)]
 struct Item {
     name: Sym,
     file: FileId,
@@ -80,12 +86,25 @@ struct Item {
 impl Pending {
     /// Whether `name` is bound by an item not evaluated yet.
     pub(crate) fn has(&self, name: Sym) -> bool {
+        self.touched.set(true);
         self.by_name.contains_key(&name)
     }
 
     /// The names bound by pending items (for "did you mean").
     pub(crate) fn names(&self) -> impl Iterator<Item = Sym> + '_ {
+        self.touched.set(true);
         self.by_name.keys().copied()
+    }
+
+    /// Notes a change (`what`, with its operands) in [`Pending::state`].
+    fn changed(&mut self, what: u64, a: u64, b: u64) {
+        self.touched.set(true);
+        let mut h = self.state ^ what.wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        for x in [a, b] {
+            h = (h ^ x).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            h ^= h >> 31;
+        }
+        self.state = h;
     }
 }
 
@@ -351,6 +370,7 @@ impl Evaluator<'_> {
         if !self.lazy_library(id) {
             return false;
         }
+        self.pending.touched.set(true);
         let pieces = match self.pending.splits.get(&id) {
             Some(p) => p.clone(),
             None => {
@@ -420,6 +440,8 @@ impl Evaluator<'_> {
                     self.before_bind(sym);
                     self.scope.undef(sym);
                     let k = self.pending.items.len();
+                    self.pending.changed(1, u64::from(sym.0), *start as u64);
+                    self.pending.changed(2, u64::from(id.0), *end as u64);
                     self.pending.items.push(Some(Item {
                         name: sym,
                         file: id,
@@ -437,9 +459,11 @@ impl Evaluator<'_> {
 
     /// Evaluates the pending library item binding `name`, if there is one.
     pub(crate) fn force(&mut self, name: Sym) {
+        self.pending.touched.set(true);
         let Some(k) = self.pending.by_name.remove(&name) else {
             return;
         };
+        self.pending.changed(3, u64::from(name.0), k as u64);
         let Some(item) = self.pending.items[k].take() else {
             return;
         };
@@ -471,6 +495,7 @@ impl Evaluator<'_> {
     /// that mentions it is evaluated first (it saw the old value), and a
     /// pending item binding `name` is dropped (the new binding replaces it).
     pub(crate) fn before_bind(&mut self, name: Sym) {
+        self.pending.touched.set(true);
         // Nothing saw a value of `name` if it has none (a macro's forward
         // reference to one defined later in the file, say).
         if self.pending.by_name.is_empty()
@@ -480,6 +505,7 @@ impl Evaluator<'_> {
             return;
         }
         if let Some(ks) = self.pending.mentions.remove(&name) {
+            self.pending.changed(4, u64::from(name.0), ks.len() as u64);
             for k in ks {
                 if let Some(n) = self.pending.items[k].as_ref().map(|i| i.name) {
                     self.force(n);
@@ -487,6 +513,7 @@ impl Evaluator<'_> {
             }
         }
         if let Some(k) = self.pending.by_name.remove(&name) {
+            self.pending.changed(5, u64::from(name.0), k as u64);
             self.pending.items[k] = None;
         }
     }

@@ -1,8 +1,9 @@
 //! The language core: the evaluator and the context of the block it is in,
 //! the cursor over a block's evaluated items, expanding items (and macros),
 //! directives, expressions and values, scopes, `#include`, file input and
-//! output, the built-in functions and constants, `function { }`, and the
-//! budgets one evaluation may spend. The readers in the sibling folders build
+//! output, the built-in functions and constants, `function { }`, the
+//! budgets one evaluation may spend, and reusing what top-level items the
+//! clock does not touch did in an earlier frame. The readers in the sibling folders build
 //! scene types on top of these.
 
 pub(crate) mod blocks;
@@ -21,6 +22,7 @@ pub(crate) mod include;
 pub(crate) mod items;
 pub(crate) mod lazy;
 pub(crate) mod list;
+pub(crate) mod reuse;
 pub(crate) mod scope;
 pub(crate) mod token_level;
 pub(crate) mod trace;
