@@ -297,27 +297,8 @@ fn skip_gap(b: &[u8], mut i: usize) -> usize {
         match b.get(i) {
             Some(b' ' | b'\t' | b'\r' | b'\n' | 0x0B | 0x0C) => i += 1,
             Some(0xEF) if b.get(i + 1..i + 3) == Some(&[0xBB, 0xBF]) => i += 3,
-            Some(b'/') if b.get(i + 1) == Some(&b'/') => {
-                while i < b.len() && b[i] != b'\n' {
-                    i += 1;
-                }
-            }
-            Some(b'/') if b.get(i + 1) == Some(&b'*') => {
-                let mut depth = 0;
-                while i < b.len() {
-                    if b[i..].starts_with(b"/*") {
-                        depth += 1;
-                        i += 2;
-                    } else if b[i..].starts_with(b"*/") {
-                        depth -= 1;
-                        i += 2;
-                        if depth == 0 {
-                            break;
-                        }
-                    } else {
-                        i += 1;
-                    }
-                }
+            Some(b'/') if super::trivia::comment_end(b, i).is_some() => {
+                i = super::trivia::comment_end(b, i).unwrap_or(b.len());
             }
             _ => return i,
         }

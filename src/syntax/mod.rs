@@ -14,6 +14,7 @@ mod names;
 mod parser;
 pub mod prepass;
 mod recovery;
+pub mod trivia;
 
 pub use intern::{intern, Sym};
 pub use lower::MAX_CHAIN;

@@ -5,6 +5,7 @@
 //! end of the file) and they guarantee the recursive grammar never meets input nested
 //! deeper than [`MAX_NESTING`].
 
+use super::trivia::comment_end;
 use crate::diag::{codes, did_you_mean, Diagnostic};
 use crate::span::{FileId, Span};
 
@@ -107,26 +108,7 @@ fn directive_end(b: &[u8], from: usize, mut depth: usize) -> Option<usize> {
     let mut i = from;
     while i < b.len() {
         match b[i] {
-            b'/' if b.get(i + 1) == Some(&b'/') => {
-                while i < b.len() && b[i] != b'\n' {
-                    i += 1;
-                }
-            }
-            b'/' if b.get(i + 1) == Some(&b'*') => {
-                let mut open = 1;
-                i += 2;
-                while i < b.len() && open > 0 {
-                    if b[i] == b'/' && b.get(i + 1) == Some(&b'*') {
-                        open += 1;
-                        i += 2;
-                    } else if b[i] == b'*' && b.get(i + 1) == Some(&b'/') {
-                        open -= 1;
-                        i += 2;
-                    } else {
-                        i += 1;
-                    }
-                }
-            }
+            b'/' if comment_end(b, i).is_some() => i = comment_end(b, i).unwrap_or(b.len()),
             b'"' => {
                 i += 1;
                 while i < b.len() && !matches!(b[i], b'"' | b'\n') {

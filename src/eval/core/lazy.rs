@@ -113,27 +113,8 @@ fn skip_trivia(b: &[u8], mut i: usize) -> usize {
     loop {
         match b.get(i) {
             Some(c) if c.is_ascii_whitespace() => i += 1,
-            Some(b'/') if b.get(i + 1) == Some(&b'/') => {
-                while i < b.len() && b[i] != b'\n' {
-                    i += 1;
-                }
-            }
-            Some(b'/') if b.get(i + 1) == Some(&b'*') => {
-                let mut depth = 0;
-                while i < b.len() {
-                    if b[i..].starts_with(b"/*") {
-                        depth += 1;
-                        i += 2;
-                    } else if b[i..].starts_with(b"*/") {
-                        depth -= 1;
-                        i += 2;
-                        if depth == 0 {
-                            break;
-                        }
-                    } else {
-                        i += 1;
-                    }
-                }
+            Some(b'/') if crate::syntax::trivia::comment_end(b, i).is_some() => {
+                i = crate::syntax::trivia::comment_end(b, i).unwrap_or(b.len());
             }
             _ => return i,
         }

@@ -17,6 +17,7 @@ use super::{Evaluator, Fail, R};
 use crate::diag::{codes, Diagnostic};
 use crate::span::Span;
 use crate::syntax::ast::{DirectiveKind, Item, MacroDef};
+use crate::syntax::trivia::comment_end;
 use std::rc::Rc;
 
 /// The bodies parsed so far: by macro and decisions.
@@ -52,26 +53,7 @@ fn marks(t: &[u8]) -> Vec<Mark> {
     let mut i = 0;
     while i < t.len() {
         match t[i] {
-            b'/' if t.get(i + 1) == Some(&b'/') => {
-                while i < t.len() && t[i] != b'\n' {
-                    i += 1;
-                }
-            }
-            b'/' if t.get(i + 1) == Some(&b'*') => {
-                let mut open = 1;
-                i += 2;
-                while i < t.len() && open > 0 {
-                    if t[i] == b'/' && t.get(i + 1) == Some(&b'*') {
-                        open += 1;
-                        i += 2;
-                    } else if t[i] == b'*' && t.get(i + 1) == Some(&b'/') {
-                        open -= 1;
-                        i += 2;
-                    } else {
-                        i += 1;
-                    }
-                }
-            }
+            b'/' if comment_end(t, i).is_some() => i = comment_end(t, i).unwrap_or(t.len()),
             b'"' => i = string_end(t, i),
             b'#' => {
                 let hash = i;
