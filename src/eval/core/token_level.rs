@@ -20,8 +20,22 @@ use crate::syntax::ast::{DirectiveKind, Item, MacroDef};
 use crate::syntax::trivia::comment_end;
 use std::rc::Rc;
 
-/// The bodies parsed so far: by macro and decisions.
-pub(crate) type TokenBodies = rustc_hash::FxHashMap<(usize, Vec<u8>), Rc<[Item]>>;
+/// What the calls of macros read token by token keep for the next call: each
+/// body's directives (scanned once per macro), its conditions (parsed once)
+/// and the bodies parsed so far, by macro and decisions.
+#[derive(Default)]
+pub(crate) struct TokenBodies {
+    scans: rustc_hash::FxHashMap<usize, Rc<Scan>>,
+    conditions: rustc_hash::FxHashMap<(usize, usize), Rc<crate::syntax::ast::File>>,
+    bodies: rustc_hash::FxHashMap<(usize, Vec<u8>), Rc<[Item]>>,
+}
+
+/// A body's text with its directive groups and the names it assigns.
+struct Scan {
+    text: String,
+    groups: Vec<Group>,
+    assigned: rustc_hash::FxHashSet<String>,
+}
 
 /// A directive of the body: the offsets of its `#`, of the end of its word and
 /// (for conditions) of the end of its parenthesised condition.
@@ -193,28 +207,40 @@ impl Evaluator<'_> {
     /// The items of `m`'s body for this call (its parameters bound): the
     /// `#if`s the call decides decided, the rest parsed (see the module's text).
     pub(crate) fn token_level_body(&mut self, m: &Rc<MacroDef>, raw: Span) -> R<Rc<[Item]>> {
-        let text: String = self
-            .sources
-            .get(raw.file)
-            .text
-            .get(raw.start as usize..raw.end as usize)
-            .unwrap_or("")
-            .to_string();
-        let marks = marks(text.as_bytes());
-        let Some(groups) = groups(&marks) else {
-            return Err(Fail::silent());
+        let id = Rc::as_ptr(m) as usize;
+        let scan = match self.token_bodies.scans.get(&id) {
+            Some(s) => s.clone(),
+            None => {
+                let text: String = self
+                    .sources
+                    .get(raw.file)
+                    .text
+                    .get(raw.start as usize..raw.end as usize)
+                    .unwrap_or("")
+                    .to_string();
+                let Some(groups) = groups(&marks(text.as_bytes())) else {
+                    return Err(Fail::silent());
+                };
+                let assigned = assigned(&text).into_iter().map(str::to_string).collect();
+                let s = Rc::new(Scan {
+                    text,
+                    groups,
+                    assigned,
+                });
+                self.token_bodies.scans.insert(id, s.clone());
+                s
+            }
         };
-        let assigned = assigned(&text);
         let mut blank: Vec<(usize, usize)> = Vec::new();
         let mut decisions = Vec::new();
-        for g in &groups {
-            self.decide(g, &text, raw, &assigned, &mut blank, &mut decisions)?;
+        for g in &scan.groups {
+            self.decide(id, g, &scan, raw, &mut blank, &mut decisions)?;
         }
-        let key = (Rc::as_ptr(m) as usize, decisions);
-        if let Some(items) = self.token_bodies.get(&key) {
+        let key = (id, decisions);
+        if let Some(items) = self.token_bodies.bodies.get(&key) {
             return Ok(items.clone());
         }
-        let mut bytes = text.into_bytes();
+        let mut bytes = scan.text.clone().into_bytes();
         for (s, e) in blank {
             for b in &mut bytes[s..e] {
                 if *b != b'\n' {
@@ -240,7 +266,7 @@ impl Evaluator<'_> {
             return Err(Fail::silent());
         }
         let items: Rc<[Item]> = file.items.into();
-        self.token_bodies.insert(key, items.clone());
+        self.token_bodies.bodies.insert(key, items.clone());
         Ok(items)
     }
 
@@ -250,13 +276,14 @@ impl Evaluator<'_> {
     /// contents decided.
     fn decide(
         &mut self,
+        id: usize,
         g: &Group,
-        text: &str,
+        scan: &Scan,
         raw: Span,
-        assigned: &rustc_hash::FxHashSet<&str>,
         blank: &mut Vec<(usize, usize)>,
         decisions: &mut Vec<u8>,
     ) -> R<()> {
+        let (text, assigned) = (&scan.text, &scan.assigned);
         let first = g.parts[0];
         let decidable = matches!(first.word, "if" | "ifdef" | "ifndef")
             && g.parts.iter().all(|p| {
@@ -266,7 +293,7 @@ impl Evaluator<'_> {
             });
         if !decidable {
             for c in &g.children {
-                self.decide(c, text, raw, assigned, blank, decisions)?;
+                self.decide(id, c, scan, raw, blank, decisions)?;
             }
             return Ok(());
         }
@@ -275,7 +302,7 @@ impl Evaluator<'_> {
         for (k, p) in g.parts.iter().enumerate() {
             let holds = match p.word {
                 "else" => true,
-                word => self.condition(word, text, p, raw)?,
+                word => self.condition(id, word, text, p, raw)?,
             };
             if holds {
                 taken = Some(k);
@@ -296,27 +323,37 @@ impl Evaluator<'_> {
             .iter()
             .filter(|c| c.parts[0].hash >= from && c.end.hash < to)
         {
-            self.decide(c, text, raw, assigned, blank, decisions)?;
+            self.decide(id, c, scan, raw, blank, decisions)?;
         }
         Ok(())
     }
 
     /// Whether the condition of `p` (an `#if`, `#elseif`, `#ifdef` or
     /// `#ifndef`) holds now.
-    fn condition(&mut self, word: &str, text: &str, p: &Mark, raw: Span) -> R<bool> {
-        // The directive and its condition as written, closed by an `#end`
-        // (the spans of the condition are the file's).
-        let head = &text[p.hash..p.cond_end];
-        let word = if word == "elseif" { "if" } else { word };
-        let src = format!("#{word}{}\n#end", &head[p.word_end - p.hash..]);
-        let base = raw.start as usize + p.word_end - word.len() - 1;
-        let (file, diags) = crate::syntax::parse_at(&src, raw.file, base);
-        if diags.iter().any(Diagnostic::is_error) {
-            for d in diags {
-                self.report(d.into());
+    fn condition(&mut self, id: usize, word: &str, text: &str, p: &Mark, raw: Span) -> R<bool> {
+        let file = match self.token_bodies.conditions.get(&(id, p.hash)) {
+            Some(f) => f.clone(),
+            None => {
+                // The directive and its condition as written, closed by an
+                // `#end` (the spans of the condition are the file's).
+                let head = &text[p.hash..p.cond_end];
+                let word = if word == "elseif" { "if" } else { word };
+                let src = format!("#{word}{}\n#end", &head[p.word_end - p.hash..]);
+                let base = raw.start as usize + p.word_end - word.len() - 1;
+                let (file, diags) = crate::syntax::parse_at(&src, raw.file, base);
+                if diags.iter().any(Diagnostic::is_error) {
+                    for d in diags {
+                        self.report(d.into());
+                    }
+                    return Err(Fail::silent());
+                }
+                let file = Rc::new(file);
+                self.token_bodies
+                    .conditions
+                    .insert((id, p.hash), file.clone());
+                file
             }
-            return Err(Fail::silent());
-        }
+        };
         let kind = file.items.first().and_then(|i| match i {
             Item::Directive(d) => Some(&d.kind),
             _ => None,
