@@ -335,7 +335,7 @@ fn mesh_instances_share_triangles() {
         rts::build::PrimShape::Mesh(a) => a.clone(),
         _ => panic!("not a mesh"),
     };
-    for p in &w.primitives {
+    for p in w.primitives.iter() {
         match &p.shape {
             rts::build::PrimShape::Mesh(a) => assert!(std::sync::Arc::ptr_eq(a, &first)),
             _ => panic!("not a mesh"),
@@ -419,4 +419,26 @@ fn timing_many_spheres() {
         w.bvh.node_count()
     );
     assert_eq!(film.pixels.len(), 640 * 480);
+}
+
+/// A mesh object reused by a later frame, then evaluated again (placed anew)
+/// with the same triangles, still has the hierarchy built in the first frame.
+#[test]
+fn a_mesh_keeps_its_hierarchy_through_reused_and_new_placements() {
+    let m = shared_mesh();
+    let accel = |w: &World| match &w.primitives[0].shape {
+        rts::build::PrimShape::Mesh(a) => a.clone(),
+        _ => panic!("not a mesh"),
+    };
+    let mut s = scene(Camera::default(), vec![object(Shape::Mesh(m.clone()))]);
+    let mut cache = rts::build::BuildCache::default();
+    s.placed = vec![rts::scene::next_placement()];
+    let first = accel(&rts::build::build_cached(&s, &mut cache));
+    // Reused: the same placement.
+    let second = accel(&rts::build::build_cached(&s, &mut cache));
+    // Placed again (its item evaluated again), the same mesh data.
+    s.placed = vec![rts::scene::next_placement()];
+    let third = accel(&rts::build::build_cached(&s, &mut cache));
+    assert!(std::sync::Arc::ptr_eq(&first, &second));
+    assert!(std::sync::Arc::ptr_eq(&first, &third));
 }

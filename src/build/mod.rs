@@ -79,7 +79,7 @@ pub struct World {
     /// `sky_sphere` and `fog`.
     pub atmosphere: crate::scene::Atmosphere,
     /// Every primitive, bounded ones first.
-    pub primitives: Vec<Primitive>,
+    pub primitives: Arc<Vec<Primitive>>,
     /// Indices of the unbounded primitives (planes), tested on every ray.
     pub unbounded: Vec<u32>,
     /// Hierarchy over the bounded primitives.
@@ -111,28 +111,103 @@ pub fn build(scene: &Scene) -> World {
     build_cached(scene, &mut BuildCache::default())
 }
 
-/// Hierarchies kept from one build to the next (the frames of an animation):
-/// a mesh that is the same `Arc` as in the previous build keeps its BVH, and
-/// the hierarchy over the primitives is kept while their bounds are the same
-/// bits in the same order (objects that do not move, seen by a moving camera).
+/// Hierarchies kept from one build to the next (the frames of an animation),
+/// in two levels. Below, a mesh that is the same `Arc` as in the previous
+/// build keeps its BVH (every object using it is an instance of it). Above,
+/// the hierarchy over the world's primitives: kept whole while their bounds are
+/// the same bits in the same order (objects that do not move, seen by a moving
+/// camera); when only some move, the ones whose bounds stayed the same keep a
+/// tree of their own, built once, and only the moving ones' tree is built
+/// again, the two joined under one root ([`Bvh::join`]). Which tree a frame
+/// uses does not change its picture: at equal distances the hit goes to the
+/// primitive first in the world, whatever order a tree visits them in
+/// ([`World::intersect_among`]).
+///
+/// The primitives made of a top-level object are kept too: an object that a
+/// later frame reuses unevaluated (the same [`Scene::placed`] number) has them
+/// copied, not made again, and when every object is reused the list is shared.
 #[derive(Default)]
 pub struct BuildCache {
     meshes: FxHashMap<usize, Arc<MeshAccel>>,
+    /// What the previous build made of each top-level object.
+    made: Option<Made>,
+    /// An empty list with room, for the next build's primitives.
+    spare: Vec<Primitive>,
     /// The bounded primitives of the previous build and its hierarchy.
     top: Option<(Vec<(u32, Aabb)>, Bvh)>,
+    /// The primitives that stood still in the previous build, and their tree.
+    still: Option<(Vec<(u32, Aabb)>, Bvh)>,
+}
+
+/// The primitives of a build, by the top-level object they were made of.
+struct Made {
+    /// The objects' placement numbers ([`Scene::placed`]), in order.
+    placed: Vec<u64>,
+    /// Where each placement number is in `placed`.
+    index: FxHashMap<u64, u32>,
+    /// Per object: its bounded primitives (start, count) and its unbounded
+    /// ones (start, count) in `prims`.
+    ranges: Vec<[u32; 4]>,
+    /// Per object: the meshes it used (their data's addresses).
+    meshes: Vec<Box<[usize]>>,
+    /// The world's primitives (bounded first, each part in file order), and
+    /// which of them may let light through.
+    prims: Arc<Vec<Primitive>>,
+    translucent: Vec<bool>,
+}
+
+/// Fewest primitives standing still for the world's tree to come in two
+/// levels; below, building it whole costs next to nothing.
+const TWO_LEVEL_MIN: usize = 64;
+
+/// The hierarchy over `items` (this build's bounded primitives), reusing what
+/// `cache` holds from the previous build (see [`BuildCache`]); leaves the
+/// cache ready for the next.
+fn world_tree(items: Vec<(u32, Aabb)>, cache: &mut BuildCache) -> Bvh {
+    let previous = cache.top.take();
+    let still = cache.still.take();
+    let bvh = match &previous {
+        Some((old, bvh)) if same_bounds(old, &items) => {
+            cache.still = still;
+            bvh.clone()
+        }
+        Some((old, _)) if old.len() == items.len() => {
+            let (standing, moving): (Vec<_>, Vec<_>) =
+                items.iter().zip(old).partition(|(x, y)| same_item(x, y));
+            let standing: Vec<(u32, Aabb)> = standing.into_iter().map(|(x, _)| *x).collect();
+            let moving: Vec<(u32, Aabb)> = moving.into_iter().map(|(x, _)| *x).collect();
+            // Two levels pay when most of the world stands still.
+            if standing.len() >= TWO_LEVEL_MIN && moving.len() * 4 <= standing.len() {
+                let tree = match still {
+                    Some((kept, tree)) if same_bounds(&kept, &standing) => tree,
+                    _ => Bvh::build(&standing),
+                };
+                let joined = tree.join(&Bvh::build(&moving));
+                cache.still = Some((standing, tree));
+                joined.unwrap_or_else(|| Bvh::build(&items))
+            } else {
+                Bvh::build(&items)
+            }
+        }
+        _ => Bvh::build(&items),
+    };
+    cache.top = Some((items, bvh.clone()));
+    bvh
+}
+
+/// Whether two primitives' bounds are the same bits for the same index.
+fn same_item((i, x): &(u32, Aabb), (j, y): &(u32, Aabb)) -> bool {
+    let bits = |x: &Aabb| {
+        let (lo, hi) = (x.min.to_array(), x.max.to_array());
+        [lo, hi].map(|v| v.map(f64::to_bits))
+    };
+    i == j && bits(x) == bits(y)
 }
 
 /// Whether two lists of primitive bounds are the same bits (a hierarchy built
 /// over one is the hierarchy built over the other).
 fn same_bounds(a: &[(u32, Aabb)], b: &[(u32, Aabb)]) -> bool {
-    let bits = |x: &Aabb| {
-        let (lo, hi) = (x.min.to_array(), x.max.to_array());
-        [lo, hi].map(|v| v.map(f64::to_bits))
-    };
-    a.len() == b.len()
-        && a.iter()
-            .zip(b)
-            .all(|((i, x), (j, y))| i == j && bits(x) == bits(y))
+    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| same_item(x, y))
 }
 
 /// [`build`], reusing the mesh hierarchies of the previous build in `cache`.
@@ -148,29 +223,51 @@ pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
         interior: None,
         flags: ObjectFlags::default(),
     };
-    for obj in &scene.objects {
-        b.flatten(obj, None, &inherited);
+    let known = scene.placed.len() == scene.objects.len();
+    let mut previous = cache.made.take().filter(|_| known);
+    // Every object as in the previous build: its primitives, shared. Or the
+    // same objects in the same places but a few placed again (the moving
+    // ones), each into as many primitives as before: those are written over
+    // in the list no world holds any more.
+    let same = previous.as_mut().is_some_and(|m| {
+        if m.placed == scene.placed {
+            for keys in &m.meshes {
+                b.keep_meshes(keys);
+            }
+            true
+        } else {
+            b.update_in_place(scene, &inherited, m)
+        }
+    });
+    let (prims, translucent, made) = match previous {
+        Some(m) if same => (m.prims.clone(), m.translucent.clone(), m),
+        previous => {
+            let spare = std::mem::take(&mut cache.spare);
+            let made = b.flatten_all(scene, &inherited, previous.as_ref(), spare);
+            // The previous list's memory takes the next build's primitives
+            // (a fresh one would be paged in again every frame).
+            if let Some(mut v) = previous.and_then(|m| Arc::try_unwrap(m.prims).ok()) {
+                v.clear();
+                cache.spare = v;
+            }
+            (made.prims.clone(), made.translucent.clone(), made)
+        }
+    };
+    if known {
+        cache.made = Some(made);
     }
-    let mut prims = b.prims;
     cache.meshes = b
         .meshes
         .iter()
         .map(|(k, v)| (*k as usize, v.clone()))
         .collect();
-    // Bounded first keeps BVH indices dense; order is otherwise file order.
-    prims.sort_by_key(|p: &Primitive| p.bounds.is_none());
     let items: Vec<(u32, Aabb)> = prims
         .iter()
         .enumerate()
         .filter_map(|(i, p)| p.bounds.map(|b| (i as u32, b)))
         .collect();
-    let bvh = match cache.top.take() {
-        Some((old, bvh)) if same_bounds(&old, &items) => bvh,
-        _ => Bvh::build(&items),
-    };
     let unbounded = (items.len() as u32..prims.len() as u32).collect();
-    cache.top = Some((items, bvh.clone()));
-    let translucent = transparency::translucent(&prims);
+    let bvh = world_tree(items, cache);
     let with_media = |i: &Option<Arc<Interior>>| i.as_ref().is_some_and(|i| !i.media.is_empty());
     let object_media = prims.iter().any(|p| {
         with_media(&p.interior)
@@ -267,10 +364,13 @@ struct Builder {
     previous: FxHashMap<usize, Arc<MeshAccel>>,
     /// Glyph prisms by outline address and heights, shared by repeated letters.
     glyphs: FxHashMap<(usize, u64, u64), Arc<shapes::prism::Prism>>,
+    /// The meshes (data addresses) used since last taken.
+    used: Vec<usize>,
 }
 
 impl Builder {
     fn mesh(&mut self, m: &Arc<MeshData>) -> Arc<MeshAccel> {
+        self.used.push(Arc::as_ptr(m) as usize);
         self.meshes
             .entry(Arc::as_ptr(m))
             .or_insert_with(|| {
@@ -280,6 +380,148 @@ impl Builder {
                     .unwrap_or_else(|| Arc::new(MeshAccel::new(m.clone())))
             })
             .clone()
+    }
+
+    /// Keeps the previous build's hierarchies of the meshes at `keys` (used by
+    /// primitives reused from it) for the next build.
+    fn keep_meshes(&mut self, keys: &[usize]) {
+        for k in keys {
+            if let Some(m) = self.previous.get(k) {
+                self.meshes.insert(*k as *const MeshData, m.clone());
+            }
+        }
+    }
+
+    /// Makes `m` what [`Builder::flatten_all`] would make of `scene` by writing
+    /// the primitives of the objects placed again over their predecessors',
+    /// when it can: no world shares `m`'s list any more, `scene` has as many
+    /// objects, each placed at the same position as before or newly placed, and
+    /// each newly placed one makes as many bounded and unbounded primitives as
+    /// the one it replaces. `false` (and `m` untouched) otherwise.
+    fn update_in_place(&mut self, scene: &Scene, inherited: &Inherited, m: &mut Made) -> bool {
+        if m.placed.len() != scene.placed.len() || Arc::get_mut(&mut m.prims).is_none() {
+            return false;
+        }
+        // (object, its primitives and whether each may let light through, its meshes)
+        let mut fresh = Vec::new();
+        for (k, (&now, &then)) in scene.placed.iter().zip(&m.placed).enumerate() {
+            if now == then {
+                continue;
+            }
+            if m.index.contains_key(&now) {
+                return false; // an object reused elsewhere: the order changed
+            }
+            self.flatten(&scene.objects[k], None, inherited);
+            let prims: Vec<Primitive> = self.prims.drain(..).collect();
+            let see = transparency::translucent(&prims);
+            let keys = std::mem::take(&mut self.used).into_boxed_slice();
+            let [_, bn, _, un] = m.ranges[k];
+            let bounded = prims.iter().filter(|p| p.bounds.is_some()).count();
+            if bounded != bn as usize || prims.len() - bounded != un as usize {
+                return false;
+            }
+            fresh.push((k, prims, see, keys));
+        }
+        let Some(list) = Arc::get_mut(&mut m.prims) else {
+            return false;
+        };
+        for (k, prims, see, keys) in fresh {
+            let [bs, _, us, _] = m.ranges[k].map(|x| x as usize);
+            let (mut b, mut u) = (bs, us);
+            for (p, t) in prims.into_iter().zip(see) {
+                let at = if p.bounds.is_some() { &mut b } else { &mut u };
+                list[*at] = p;
+                m.translucent[*at] = t;
+                *at += 1;
+            }
+            m.index.remove(&m.placed[k]);
+            m.index.insert(scene.placed[k], k as u32);
+            m.placed[k] = scene.placed[k];
+            m.meshes[k] = keys;
+        }
+        for keys in &m.meshes {
+            self.keep_meshes(keys);
+        }
+        true
+    }
+
+    /// The primitives of `scene`'s objects, bounded ones first (each part in
+    /// file order, the bounded ones in `room`'s memory), with what the next
+    /// build needs to reuse them; the primitives of an object `previous` holds
+    /// are copied from it.
+    fn flatten_all(
+        &mut self,
+        scene: &Scene,
+        inherited: &Inherited,
+        previous: Option<&Made>,
+        room: Vec<Primitive>,
+    ) -> Made {
+        let n = scene.objects.len();
+        let mut bounded = room;
+        bounded.reserve(n);
+        let mut unbounded: Vec<Primitive> = Vec::new();
+        let (mut see_b, mut see_u) = (Vec::with_capacity(n), Vec::new());
+        let mut made = Made {
+            placed: scene.placed.clone(),
+            index: FxHashMap::default(),
+            ranges: Vec::with_capacity(n),
+            meshes: Vec::with_capacity(n),
+            prims: Arc::default(),
+            translucent: Vec::new(),
+        };
+        made.index.reserve(n);
+        for (k, obj) in scene.objects.iter().enumerate() {
+            let placed = scene.placed.get(k).copied();
+            let (b0, u0) = (bounded.len(), unbounded.len());
+            let old = previous
+                .zip(placed)
+                .and_then(|(m, p)| m.index.get(&p).map(|&j| (m, j as usize)));
+            let keys = match old {
+                Some((m, j)) => {
+                    let [bs, bn, us, un] = m.ranges[j].map(|x| x as usize);
+                    bounded.extend_from_slice(&m.prims[bs..bs + bn]);
+                    unbounded.extend_from_slice(&m.prims[us..us + un]);
+                    see_b.extend_from_slice(&m.translucent[bs..bs + bn]);
+                    see_u.extend_from_slice(&m.translucent[us..us + un]);
+                    self.keep_meshes(&m.meshes[j]);
+                    m.meshes[j].clone()
+                }
+                None => {
+                    self.flatten(obj, None, inherited);
+                    let see = transparency::translucent(&self.prims);
+                    for (p, t) in self.prims.drain(..).zip(see) {
+                        if p.bounds.is_some() {
+                            bounded.push(p);
+                            see_b.push(t);
+                        } else {
+                            unbounded.push(p);
+                            see_u.push(t);
+                        }
+                    }
+                    std::mem::take(&mut self.used).into_boxed_slice()
+                }
+            };
+            if let Some(p) = placed {
+                made.index.insert(p, k as u32);
+            }
+            made.ranges.push([
+                b0 as u32,
+                (bounded.len() - b0) as u32,
+                u0 as u32,
+                (unbounded.len() - u0) as u32,
+            ]);
+            made.meshes.push(keys);
+        }
+        // The unbounded ones come after all the bounded ones.
+        let nb = bounded.len() as u32;
+        for r in &mut made.ranges {
+            r[2] += nb;
+        }
+        bounded.append(&mut unbounded);
+        see_b.append(&mut see_u);
+        made.prims = Arc::new(bounded);
+        made.translucent = see_b;
+        made
     }
 
     /// The glyphs of a `text` at `world_from_obj`: one prism each, placed by
@@ -814,12 +1056,22 @@ impl World {
                 }
             }
         }
+        // At equal distances the primitive first in the world wins (an unbounded
+        // one, tested above, before any in the tree), whatever order the tree
+        // visits them in: a world built in two levels ([`BuildCache`]) sees
+        // what one built whole sees.
+        let bounded = self.primitives.len() - self.unbounded.len();
         bvh.traverse(ray, t_min, t_max, |i, t_max| {
             let p = &self.primitives[i as usize];
             if kind.sees(&p.flags) {
-                if let Some(h) = p.intersect(ray, t_min, t_max) {
-                    best = Some(found(i, h));
-                    return Some(h.0);
+                let ties = best.is_some_and(|b| (b.prim as usize) < bounded && i < b.prim);
+                let reach = if ties { t_max.next_up() } else { t_max };
+                if let Some(h) = p.intersect(ray, t_min, reach) {
+                    let nearer = best.is_none_or(|b| h.0 < b.t || (ties && h.0 <= b.t));
+                    if nearer {
+                        best = Some(found(i, h));
+                        return Some(h.0);
+                    }
                 }
             }
             Some(t_max)
@@ -1163,6 +1415,128 @@ mod tests {
         assert!(w
             .intersect(&side, 0.0, f64::INFINITY, RayKind::Camera)
             .is_none());
+    }
+
+    /// A row of spheres, each twice (same place, same size: every hit of one is
+    /// at the distance of the other's), and one more at `x` on its own.
+    fn spheres_and_one_at(x: f64) -> Scene {
+        let mut objects = Vec::new();
+        for k in 0..80 {
+            let center = DVec3::new((k % 10) as f64, (k / 10) as f64, 0.0);
+            for _ in 0..2 {
+                objects.push(obj(Shape::Sphere {
+                    center,
+                    radius: 0.4,
+                }));
+            }
+        }
+        objects.push(obj(Shape::Sphere {
+            center: DVec3::new(x, 3.5, -1.0),
+            radius: 0.45,
+        }));
+        Scene {
+            objects,
+            ..Scene::default()
+        }
+    }
+
+    #[test]
+    fn a_world_built_in_two_levels_sees_what_one_built_whole_sees() {
+        let mut cache = BuildCache::default();
+        for frame in 0..4 {
+            let scene = spheres_and_one_at(frame as f64 * 0.7);
+            let kept = build_cached(&scene, &mut cache);
+            let whole = build(&scene);
+            // From the second frame on, the 160 that stand still keep a tree.
+            let still = cache.still.as_ref().map_or(0, |(s, _)| s.len());
+            assert_eq!(still, if frame == 0 { 0 } else { 160 }, "frame {frame}");
+            for i in 0..40 {
+                for j in 0..30 {
+                    let at = DVec3::new(i as f64 * 0.25 - 0.5, j as f64 * 0.3 - 0.5, -5.0);
+                    let ray = Ray::new(at, DVec3::new(0.01, 0.02, 1.0).normalize());
+                    let hit = |w: &World| {
+                        w.intersect(&ray, 1e-6, f64::INFINITY, RayKind::Camera)
+                            .map(|h| (h.t.to_bits(), h.prim))
+                    };
+                    let brute = whole
+                        .intersect_brute_force(&ray, 1e-6, f64::INFINITY, RayKind::Camera)
+                        .map(|h| h.t.to_bits());
+                    assert_eq!(hit(&kept), hit(&whole), "frame {frame}, ray {i} {j}");
+                    assert_eq!(hit(&kept).map(|h| h.0), brute);
+                    // Of two spheres in the same place, the first is seen.
+                    if let Some((_, p)) = hit(&kept) {
+                        if (p as usize) < 160 {
+                            assert_eq!(p % 2, 0, "frame {frame}, ray {i} {j}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn objects_reused_by_a_later_frame_keep_their_primitives() {
+        // Frame 1 places everything; frame 2 reuses all but the last object (the
+        // moving sphere, placed again), frame 3 reuses everything.
+        let mut first = spheres_and_one_at(0.0);
+        first.objects.push(obj(Shape::Plane {
+            normal: DVec3::Y,
+            distance: -1.0,
+        }));
+        first.placed = (1..=first.objects.len() as u64).collect();
+        let mut second = spheres_and_one_at(2.0);
+        second.objects.push(first.objects[161].clone());
+        second.placed = first.placed.clone();
+        second.placed[160] = 1000;
+        let mut cache = BuildCache::default();
+        let one = build_cached(&first, &mut cache);
+        let two = build_cached(&second, &mut cache);
+        let three = build_cached(&second, &mut cache);
+        assert!(Arc::ptr_eq(&two.primitives, &three.primitives));
+        assert!(!Arc::ptr_eq(&one.primitives, &two.primitives));
+        for (world, scene) in [(&one, &first), (&two, &second), (&three, &second)] {
+            let fresh = build(scene);
+            assert_eq!(world.primitives.len(), fresh.primitives.len());
+            assert_eq!(world.unbounded, fresh.unbounded);
+            assert_eq!(world.unbounded, vec![161]);
+            assert_eq!(world.translucent, fresh.translucent);
+            for (a, b) in world.primitives.iter().zip(fresh.primitives.iter()) {
+                assert_eq!(a.bounds, b.bounds);
+                assert_eq!(format!("{:?}", a.shape), format!("{:?}", b.shape));
+            }
+        }
+        // The moved sphere is where the second scene puts it.
+        let moved = two.primitives[160].bounds.unwrap();
+        assert!((moved.min.x - (2.0 - 0.45)).abs() < 1e-9);
+        // Without placement numbers nothing is reused.
+        let plain = Scene {
+            placed: Vec::new(),
+            ..second.clone()
+        };
+        let four = build_cached(&plain, &mut cache);
+        assert!(!Arc::ptr_eq(&four.primitives, &three.primitives));
+        drop((one, two, three, four));
+
+        // Frame after frame, each world dropped before the next is built (as a
+        // sequence does): the moving sphere's primitive is written over in the
+        // same list.
+        let mut cache = BuildCache::default();
+        let mut list = None;
+        for frame in 0..4 {
+            let mut s = spheres_and_one_at(frame as f64);
+            s.placed = first.placed[..161].to_vec();
+            s.placed[160] = 2000 + frame;
+            let w = build_cached(&s, &mut cache);
+            let fresh = build(&s);
+            for (a, b) in w.primitives.iter().zip(fresh.primitives.iter()) {
+                assert_eq!(a.bounds, b.bounds, "frame {frame}");
+            }
+            let at = Arc::as_ptr(&w.primitives) as usize;
+            if frame > 0 {
+                assert_eq!(Some(at), list, "frame {frame}: a new list");
+            }
+            list = Some(at);
+        }
     }
 
     #[test]

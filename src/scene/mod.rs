@@ -63,6 +63,12 @@ pub struct Scene {
     pub lights: Vec<Light>,
     /// Top-level objects, in file order.
     pub objects: Vec<Object>,
+    /// For each of `objects`, a number no other placement of an object shares
+    /// (see [`next_placement`]). An object an animation's later frame reuses
+    /// from an earlier one (its item was not evaluated again) keeps its number,
+    /// so the build can reuse what it made of it. Shorter than `objects` (for a
+    /// scene made in code) means nothing is known: everything is built.
+    pub placed: Vec<u64>,
     /// Colour of rays that hit nothing (`background { … }`; black by default).
     pub background: Colour,
     /// `global_settings { … }`.
@@ -73,12 +79,20 @@ pub struct Scene {
     pub animation: Option<Timeline>,
 }
 
+/// A number for one placement of an object in a scene, unique in the process.
+pub fn next_placement() -> u64 {
+    use std::sync::atomic::{AtomicU64, Ordering};
+    static NEXT: AtomicU64 = AtomicU64::new(1);
+    NEXT.fetch_add(1, Ordering::Relaxed)
+}
+
 impl Default for Scene {
     fn default() -> Self {
         Scene {
             camera: Camera::default(),
             lights: Vec::new(),
             objects: Vec::new(),
+            placed: Vec::new(),
             background: Colour::BLACK,
             global: GlobalSettings::default(),
             atmosphere: Atmosphere::default(),

@@ -149,6 +149,30 @@ impl Bvh {
         }
     }
 
+    /// One hierarchy over `self`'s and `other`'s primitives, their trees kept
+    /// whole under a new root (the two levels of an animation's world: what
+    /// stands still, built once, and what moves, built every frame). `None`
+    /// unless both are binary trees (the world's kind).
+    pub fn join(&self, other: &Bvh) -> Option<Bvh> {
+        if self.exact.is_empty() || other.exact.is_empty() {
+            return None;
+        }
+        let exact = binary::join(&self.exact, &other.exact, self.prims.len() as u32);
+        let mut prims = Vec::with_capacity(self.prims.len() + other.prims.len());
+        prims.extend_from_slice(&self.prims);
+        prims.extend_from_slice(&other.prims);
+        let root = match (self.root, other.root) {
+            (Some(a), Some(b)) => Some(a.union(&b)),
+            (a, b) => a.or(b),
+        };
+        Some(Bvh {
+            exact,
+            prims,
+            root,
+            ..Bvh::default()
+        })
+    }
+
     /// World bounds of everything in the hierarchy.
     pub fn bounds(&self) -> Aabb {
         self.root.map_or(Aabb::EMPTY, |b| {

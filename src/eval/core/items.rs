@@ -212,6 +212,7 @@ impl Evaluator<'_> {
                     self.place(Tok::Block("light_source", Value::Light(Arc::new(l)), span));
                 }
                 self.scene.objects.push(o);
+                self.scene.placed.push(crate::scene::next_placement());
                 return;
             }
             Tok::Block(_, Value::Light(l), span) => {

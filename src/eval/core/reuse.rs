@@ -56,8 +56,9 @@ pub(crate) struct Record {
     pending: Option<(u64, Option<Rc<Pending>>)>,
     /// Messages reported, in order (before merging repeats).
     diags: Vec<Diagnostic>,
-    /// Objects and lights placed.
+    /// Objects and lights placed (and the objects' placement numbers).
     objects: Vec<Object>,
+    placed: Vec<u64>,
     lights: Vec<Light>,
     /// `#version`, `#default` (its stamp) and light groups before and after.
     before: Ambient,
@@ -311,6 +312,7 @@ impl Evaluator<'_> {
             pending,
             diags,
             objects: self.scene.objects[s.objects..].to_vec(),
+            placed: self.scene.placed[s.objects..].to_vec(),
             lights: self.scene.lights[s.lights..].to_vec(),
             before: s.ambient,
             after: self.ambient(),
@@ -367,6 +369,7 @@ impl Evaluator<'_> {
             self.record(d.clone());
         }
         self.scene.objects.extend(r.objects.iter().cloned());
+        self.scene.placed.extend_from_slice(&r.placed);
         self.scene.lights.extend(r.lights.iter().cloned());
         self.language_version = r.after.language_version;
         self.default_stamp = r.after.default_stamp;
