@@ -1,8 +1,12 @@
 #![allow(missing_docs)] // criterion_group! generates an undocumented function
 //! Editor latency: after a change to a 5,000-line scene, how long until its
 //! diagnostics are ready (parse + evaluate + index + placement), and how long the
-//! other requests take on it. Target (issue 5): diagnostics ≤ 50 ms.
-//! Run with `cargo bench --bench lsp`.
+//! other requests take on it. Target (issue 5): diagnostics ≤ 50 ms; issue 30:
+//! ≤ 20 ms after a change. Run with `cargo bench --bench lsp`.
+//! Measured (2026-11-28, 2-core machine, a fuzzer at nice 19 beside it): after a
+//! change 3.4 ms (the edited chunk parsed again, the file evaluated again: the
+//! built-in library is read on demand, so `colors.inc` costs next to nothing),
+//! on open 30 ms, semantic tokens 2.1 ms, hover + completion + definition 0.9 ms.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use rts::ide::{self, Position};
