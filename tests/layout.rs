@@ -53,11 +53,6 @@ const KNOWN_EXCEPTIONS: &[(&str, &str, &str)] = &[
     ),
     ("src/eval/objects/revolve.rs", "build", "lathe segments"),
     (
-        "src/eval/objects/shapes_more.rs",
-        "build",
-        "bicubic patch checks",
-    ),
-    (
         "src/eval/objects/text.rs",
         "build",
         "glyph outlines from the font reader",

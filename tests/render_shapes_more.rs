@@ -11,10 +11,10 @@ use glam::{DVec2, DVec3, DVec4};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 use render_support::*;
-use rts::build::shapes::bicubic;
 use rts::build::shapes::julia::{Algebra, Julia, JuliaFn};
 use rts::build::shapes::sweep::SweepSpline;
 use rts::build::{build, Ray, RayKind, World};
+use rts::eval::bicubic;
 use rts::scene::{Camera, Object, Shape, SweepData, Transform};
 use std::sync::Arc;
 

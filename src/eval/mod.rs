@@ -38,6 +38,7 @@ pub use self::core::include::{
 pub use self::core::value::Value;
 pub use self::core::vocabulary::{block_keywords, top_level_keywords};
 pub use self::core::{file_io, value};
+pub use self::objects::bicubic;
 pub use self::objects::object::OBJECT_BLOCKS;
 pub use crate::scene::{Spline, SplineKind};
 pub use crate::syntax::builtins::{is_function as is_builtin_function, BUILTIN_NAMES};

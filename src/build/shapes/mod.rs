@@ -1,7 +1,6 @@
 //! Ray intersection, normals and inside tests of each kind of shape, in the
 //! shape's own space. One file per family; [`super::PrimShape`] dispatches.
 
-pub mod bicubic;
 pub mod blob;
 pub mod flat;
 pub mod isosurface;

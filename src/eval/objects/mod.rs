@@ -1,9 +1,10 @@
 //! Readers of objects: the shapes, CSG and the modifiers every object takes
 //! (`object`), the shapes beyond the first release (`shapes`, `shapes_more`),
 //! meshes written in the scene (`mesh`) or read from files (`import`, kept
-//! between frames by `mesh_cache`), revolved shapes (`revolve`), blobs, text
-//! and isosurfaces.
+//! between frames by `mesh_cache`), Bézier patches tessellated into meshes
+//! (`bicubic`), revolved shapes (`revolve`), blobs, text and isosurfaces.
 
+pub mod bicubic;
 pub(crate) mod blob;
 pub(crate) mod import;
 pub(crate) mod isosurface;

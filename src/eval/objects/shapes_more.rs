@@ -1,6 +1,6 @@
 //! `bicubic_patch`, `julia_fractal` and `sphere_sweep`.
 
-use crate::build::shapes::bicubic;
+use super::bicubic;
 use crate::diag::{codes, Diagnostic};
 use crate::eval::core::cursor::{Cursor, Tok};
 use crate::eval::core::value::Value;

@@ -49,9 +49,7 @@ pub fn eval(points: &[DVec3; 16], u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
 /// patch is degenerate there in every direction.
 pub fn normal(points: &[DVec3; 16], u: f64, v: f64) -> DVec3 {
     let (_, pu, pv) = eval(points, u, v);
-    let n = pu.cross(pv);
-    let scale = pu.length() * pv.length();
-    if n.length_squared() > 1e-18 * scale * scale && scale > 0.0 {
+    if let Some(n) = normal_from(pu, pv) {
         return n;
     }
     for d in [1e-4, 1e-3, 1e-2] {
@@ -68,30 +66,88 @@ pub fn normal(points: &[DVec3; 16], u: f64, v: f64) -> DVec3 {
     DVec3::ZERO
 }
 
+/// `pu × pv` when it does not vanish against the tangents' lengths.
+fn normal_from(pu: DVec3, pv: DVec3) -> Option<DVec3> {
+    let n = pu.cross(pv);
+    let scale = pu.length() * pv.length();
+    (n.length_squared() > 1e-18 * scale * scale && scale > 0.0).then_some(n)
+}
+
 /// The triangles of a patch: `2^u_steps × 2^v_steps` cells, two triangles
 /// each, vertex normals from the patch, and uv from the corners' `uv`
-/// (for the control points 1, 4, 16 and 13, interpolated bilinearly).
+/// (for the control points 1, 4, 16 and 13, interpolated bilinearly). Rows
+/// of vertices of a big patch are computed in parallel (each the same
+/// whatever the threads).
 pub fn tessellate(points: &[DVec3; 16], u_steps: u32, v_steps: u32, uv: [DVec2; 4]) -> MeshData {
+    use rayon::prelude::*;
     let nu = 1usize << u_steps.min(MAX_STEPS);
     let nv = 1usize << v_steps.min(MAX_STEPS);
-    let mut m = MeshData::default();
-    for i in 0..=nu {
-        let u = i as f64 / nu as f64;
-        for j in 0..=nv {
+    let along: Vec<(f64, [f64; 4], [f64; 4])> = (0..=nv)
+        .map(|j| {
             let v = j as f64 / nv as f64;
-            let (p, _, _) = eval(points, u, v);
-            let n = normal(points, u, v).normalize_or_zero();
-            m.positions.push([p.x as f32, p.y as f32, p.z as f32]);
-            m.normals.push([n.x as f32, n.y as f32, n.z as f32]);
-            // Corners: (u, v) = (0, 0) → uv[0], (0, 1) → uv[1], (1, 1) → uv[2], (1, 0) → uv[3].
-            let t = uv[0] * ((1.0 - u) * (1.0 - v))
-                + uv[1] * ((1.0 - u) * v)
-                + uv[2] * (u * v)
-                + uv[3] * (u * (1.0 - v));
-            m.uvs.push([t.x as f32, t.y as f32]);
-        }
+            let (bv, dv) = bernstein(v);
+            (v, bv, dv)
+        })
+        .collect();
+    type Vertex = ([f32; 3], [f32; 3], [f32; 2]);
+    // A task of at least ~4k vertices: a small patch stays on one thread.
+    let min_rows = (4096 / (nv + 1)).max(1);
+    let rows: Vec<Vec<Vertex>> = (0..nu + 1)
+        .into_par_iter()
+        .with_min_len(min_rows)
+        .map(|i| {
+            let u = i as f64 / nu as f64;
+            let (bu, du) = bernstein(u);
+            // The rows of control points combined at u (and their u-derivative):
+            // a cubic in v whose points and tangents the patch has at this u.
+            let mut row = [DVec3::ZERO; 4];
+            let mut row_u = [DVec3::ZERO; 4];
+            for k in 0..4 {
+                for j in 0..4 {
+                    row[j] += points[k * 4 + j] * bu[k];
+                    row_u[j] += points[k * 4 + j] * du[k];
+                }
+            }
+            along
+                .iter()
+                .map(|&(v, bv, dv)| {
+                    let (mut p, mut pu, mut pv) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO);
+                    for j in 0..4 {
+                        p += row[j] * bv[j];
+                        pu += row_u[j] * bv[j];
+                        pv += row[j] * dv[j];
+                    }
+                    let n = match normal_from(pu, pv) {
+                        Some(n) => n,
+                        None => normal(points, u, v),
+                    }
+                    .normalize_or_zero();
+                    // Corners: (u, v) = (0, 0) → uv[0], (0, 1) → uv[1], (1, 1) → uv[2], (1, 0) → uv[3].
+                    let t = uv[0] * ((1.0 - u) * (1.0 - v))
+                        + uv[1] * ((1.0 - u) * v)
+                        + uv[2] * (u * v)
+                        + uv[3] * (u * (1.0 - v));
+                    (
+                        [p.x as f32, p.y as f32, p.z as f32],
+                        [n.x as f32, n.y as f32, n.z as f32],
+                        [t.x as f32, t.y as f32],
+                    )
+                })
+                .collect()
+        })
+        .collect();
+    let mut m = MeshData::default();
+    let count = (nu + 1) * (nv + 1);
+    m.positions.reserve(count);
+    m.normals.reserve(count);
+    m.uvs.reserve(count);
+    for (p, n, t) in rows.into_iter().flatten() {
+        m.positions.push(p);
+        m.normals.push(n);
+        m.uvs.push(t);
     }
     let at = |i: usize, j: usize| (i * (nv + 1) + j) as u32;
+    m.triangles.reserve(2 * nu * nv);
     for i in 0..nu {
         for j in 0..nv {
             let q = [at(i, j), at(i, j + 1), at(i + 1, j), at(i + 1, j + 1)];
