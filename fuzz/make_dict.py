@@ -29,7 +29,7 @@ def literals(text):
 def const_list(path, name):
     """The string items of `pub const NAME: &[&str] = &[ … ];` in `path`."""
     text = path.read_text()
-    m = re.search(r"pub const " + name + r": &\[&str\] = &\[(.*?)\];", text, re.S)
+    m = re.search(r"pub const " + name + r": &\[&str\] =\s*&\[(.*?)\];", text, re.S)
     if not m:
         raise SystemExit(f"{path}: no const {name}")
     return literals(m.group(1))
@@ -53,7 +53,8 @@ def main():
                     directives.add("#" + lit)
             elif len(lit) <= 3:
                 punct.add(lit)
-    words.update(const_list(ROOT / "src/syntax/keywords.rs", "KEYWORDS"))
+    for table in ("KEYWORDS", "COLOUR_WORDS", "COLOUR_PART_WORDS"):
+        words.update(const_list(ROOT / "src/syntax/keywords.rs", table))
     words.update(const_list(ROOT / "src/syntax/builtins.rs", "BUILTIN_NAMES"))
     for path in sorted((ROOT / "src/eval").rglob("*.rs")):
         words.update(re.findall(r'Kw\("([a-z_0-9]+)"', path.read_text()))

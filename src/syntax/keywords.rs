@@ -367,11 +367,20 @@ pub fn canonical(word: &str) -> &'static str {
     }
 }
 
-/// The grammar's `keyword_word` rule, generated from [`KEYWORDS`] as a trie
-/// (`grammar/keywords.pest`): the word's letters pick the branch, so a word is
-/// matched with a handful of comparisons instead of one per keyword, and every
-/// branch ends in `!ident_char` (a keyword is a whole word).
-pub fn keyword_grammar() -> String {
+/// The colour keywords of the grammar's `colour_kw` rule (`rgb 1`, `color red 1`).
+pub const COLOUR_WORDS: &[&str] = &[
+    "color", "colour", "rgb", "rgbf", "rgbft", "rgbt", "srgb", "srgbf", "srgbft", "srgbt",
+];
+
+/// The colour component keywords of the grammar's `colour_part_kw` rule.
+pub const COLOUR_PART_WORDS: &[&str] =
+    &["blue", "filter", "gray", "green", "grey", "red", "transmit"];
+
+/// A rule matching any of `words` as a whole word, written as a trie: the
+/// word's letters pick the branch, so a word is matched with a handful of
+/// comparisons instead of one per word, and every branch ends in
+/// `!ident_char`.
+fn trie(words: &[&str]) -> String {
     #[derive(Default)]
     struct Node {
         end: bool,
@@ -411,30 +420,57 @@ pub fn keyword_grammar() -> String {
         out.push_str(&alts.join(" | "));
     }
     let mut root = Node::default();
-    for w in KEYWORDS {
+    for w in words {
         insert(&mut root, w.as_bytes());
     }
     let mut body = String::new();
     alternatives(&root, &mut body);
+    format!("&ASCII_ALPHA_LOWER ~ ({body})")
+}
+
+/// `grammar/keywords.pest`: the grammar's word rules generated from the tables
+/// above as tries. `keyword_word` is [`KEYWORDS`]; `colour_kw` and
+/// `colour_part_kw` are [`COLOUR_WORDS`] and [`COLOUR_PART_WORDS`];
+/// `reserved_word`, every word a name may not be (those and `array`), lets
+/// `ident_name` reject a reserved word with one walk down one trie.
+pub fn keyword_grammar() -> String {
+    let mut reserved: Vec<&str> = KEYWORDS
+        .iter()
+        .chain(COLOUR_WORDS)
+        .chain(COLOUR_PART_WORDS)
+        .copied()
+        .chain(["array"])
+        .collect();
+    reserved.sort_unstable();
+    reserved.dedup();
     format!(
-        "// Generated from `src/syntax/keywords.rs` (`KEYWORDS`) by `keyword_grammar()`:\n\
-         // do not edit. After changing the table, run\n\
-         // `RTS_BLESS=1 cargo test --lib keyword_grammar` to write it again.\n\n\
+        "// Generated from `src/syntax/keywords.rs` (`KEYWORDS`, `COLOUR_WORDS`,\n\
+         // `COLOUR_PART_WORDS`) by `keyword_grammar()`: do not edit. After changing a\n\
+         // table, run `RTS_BLESS=1 cargo test --lib keyword_grammar` to write it again.\n\n\
          /// The reserved keywords (those that are not values or functions), as a trie.\n\
-         keyword_word = @{{ &ASCII_ALPHA_LOWER ~ ({body}) }}\n"
+         keyword_word = @{{ {} }}\n\
+         /// The colour keywords (`rgb`, `color`, …).\n\
+         colour_kw = @{{ {} }}\n\
+         /// A colour component keyword (`red 0.5`, `filter 0.2`, …).\n\
+         colour_part_kw = @{{ {} }}\n\
+         /// Every word a name may not be: the keywords, the colour words and `array`.\n\
+         reserved_word = _{{ {} }}\n",
+        trie(KEYWORDS),
+        trie(COLOUR_WORDS),
+        trie(COLOUR_PART_WORDS),
+        trie(&reserved),
     )
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{keyword_grammar, KEYWORDS};
+    use super::{keyword_grammar, COLOUR_PART_WORDS, COLOUR_WORDS, KEYWORDS};
 
     #[test]
     fn keyword_grammar_is_generated_from_the_table() {
-        assert!(
-            KEYWORDS.windows(2).all(|w| w[0] < w[1]),
-            "sorted, no repeats"
-        );
+        for table in [KEYWORDS, COLOUR_WORDS, COLOUR_PART_WORDS] {
+            assert!(table.windows(2).all(|w| w[0] < w[1]), "sorted, no repeats");
+        }
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/grammar/keywords.pest");
         let want = keyword_grammar();
         if std::env::var_os("RTS_BLESS").is_some() {

@@ -347,6 +347,60 @@ mod tests {
         assert_eq!(b.items.len(), 4, "{:#?}", b.items);
     }
 
+    /// What the word tables and guards of the grammar must keep reading the
+    /// same: `default` with and without its `#`, a vector written after a
+    /// value without a comma (a run, as the items would be), and what must not
+    /// become a run (a sign or `<` that continues an expression).
+    #[test]
+    fn words_directives_and_runs_read_as_before() {
+        for src in [
+            "#default { finish { phong 1 } }",
+            "default { finish { phong 1 } }",
+        ] {
+            let f = ok(src);
+            assert!(
+                matches!(&f.items[..], [ast::Item::Directive(_)]),
+                "{src}: {:#?}",
+                f.items
+            );
+        }
+        let f = ok("bicubic_patch { type 1 <1, 0, 0> <0, 1, 0>\n <0, 0, 1>, 2 <3, 4> }");
+        let ast::Item::Block(b) = &f.items[0] else {
+            panic!("a block")
+        };
+        let runs: Vec<usize> = b
+            .items
+            .iter()
+            .filter_map(|i| match i {
+                ast::Item::Data(d) => Some(d.len),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(runs, [6], "{:#?}", b.items);
+        for src in ["#declare A = <1, 2, 3> - <1, 1, 1>;", "#declare B = 1 < 2;"] {
+            ok(src);
+        }
+        // `1 -2` is a difference and `<1, 2> < 3` a comparison: no run.
+        let f = ok("sphere { 1 -2, <1, 2> < 3 }");
+        let ast::Item::Block(b) = &f.items[0] else {
+            panic!("a block")
+        };
+        assert!(
+            !b.items.iter().any(|i| matches!(i, ast::Item::Data(_))),
+            "{:#?}",
+            b.items
+        );
+        // Names that start like reserved words stay names; reserved words do not.
+        ok("#declare rgbx = 1; #declare arrays = 2; #declare colorful = 3; #declare red_ = 4;");
+        for src in [
+            "#declare rgbt = 1;",
+            "#declare array = 1;",
+            "#declare grey = 1;",
+        ] {
+            assert!(!parse(src, FileId(0)).1.is_empty(), "{src}");
+        }
+    }
+
     #[test]
     fn reports_several_errors() {
         let (_, d) = parse("sphere { 0, 1 ]\n", FileId(0));

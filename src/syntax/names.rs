@@ -12,6 +12,7 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         | Rule::COMMENT
         | Rule::line_comment
         | Rule::block_comment
+        | Rule::block_text
         | Rule::stray_hash => return None,
         Rule::file | Rule::one_item | Rule::only_trivia | Rule::item | Rule::body => "a statement",
         Rule::block | Rule::sized_fn => "a block",
@@ -112,6 +113,6 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         | Rule::data_text => "a number or a vector",
         Rule::string | Rule::string_inner => "a string",
         Rule::ident_char => return None,
-        Rule::keyword | Rule::keyword_word => "a keyword",
+        Rule::keyword | Rule::keyword_word | Rule::reserved_word => "a keyword",
     })
 }
