@@ -152,6 +152,67 @@ pub fn scan(text: &str, mut f: impl FnMut(Piece<'_>)) -> Result<(), BadNumber> {
     }
 }
 
+/// One component of a plain vector, with byte offsets into the vector's text.
+#[derive(Debug, PartialEq)]
+pub struct Component {
+    /// The sign written before it and where: `Some((true, i))` for `-` at `i`.
+    pub sign: Option<(bool, usize)>,
+    /// Where its digits start.
+    pub start: usize,
+    /// Where they end.
+    pub end: usize,
+    /// The digits' value (the sign not applied), or `None` when it does not
+    /// fit in an `f64`.
+    pub value: Option<f64>,
+}
+
+/// The components of a plain vector's text (`<1, -2.5, 3e-2>`, as the
+/// grammar's `plain_vector` took it), each with its sign and digits apart.
+pub fn vector_components(text: &str) -> Vec<Component> {
+    let b = text.as_bytes();
+    let mut out = Vec::with_capacity(4);
+    let mut i = skip_gap(b, 1);
+    while i < b.len() && b[i] != b'>' {
+        if b[i] == b',' {
+            i = skip_gap(b, i + 1);
+            continue;
+        }
+        let mut sign = None;
+        if let Some(&s @ (b'-' | b'+')) = b.get(i) {
+            sign = Some((s == b'-', i));
+            i = skip_gap(b, i + 1);
+        }
+        let start = i;
+        while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.') {
+            i += 1;
+        }
+        if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
+            let mut j = i + 1;
+            if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
+                j += 1;
+            }
+            if j < b.len() && b[j].is_ascii_digit() {
+                while j < b.len() && b[j].is_ascii_digit() {
+                    j += 1;
+                }
+                i = j;
+            }
+        }
+        let value = text[start..i].parse::<f64>().ok().filter(|v| v.is_finite());
+        out.push(Component {
+            sign,
+            start,
+            end: i,
+            value,
+        });
+        if i == start {
+            break; // not the grammar's shape: stop rather than loop
+        }
+        i = skip_gap(b, i);
+    }
+    out
+}
+
 /// Reads `text` (the text of a `data_run` at `span`) into a packed run.
 pub fn read(text: &str, span: Span) -> Result<DataRun, BadNumber> {
     let mut values = Vec::with_capacity(text.len() / 6);
@@ -394,6 +455,24 @@ mod tests {
         assert!(!is_plain_body("1, 2 < 3"));
         assert!(!is_plain_body("1, , 2"));
         assert!(!is_plain_body("."));
+    }
+
+    #[test]
+    fn vector_components_keep_signs_and_places() {
+        let c = vector_components("< -1.5,+2 , /* c */ 3e2,>");
+        let got: Vec<_> = c
+            .iter()
+            .map(|c| (c.sign, c.start, c.end, c.value))
+            .collect();
+        assert_eq!(
+            got,
+            [
+                (Some((true, 2)), 3, 6, Some(1.5)),
+                (Some((false, 7)), 8, 9, Some(2.0)),
+                (None, 20, 23, Some(300.0)),
+            ]
+        );
+        assert_eq!(vector_components("<1e999, 0>")[0].value, None);
     }
 
     #[test]

@@ -482,22 +482,10 @@ impl Lowerer {
             }
             Rule::chain | Rule::sum => self.chain(p),
             Rule::number => {
-                let v = match p.as_str().parse::<f64>() {
-                    Ok(v) if v.is_finite() => v,
-                    _ => {
-                        self.diags.push(
-                            Diagnostic::error(codes::BAD_NUMBER, span, "number too large")
-                                .with_label("this does not fit in a 64-bit float")
-                                .with_help("use a number below 1.8e308"),
-                        );
-                        0.0
-                    }
-                };
-                Expr {
-                    kind: ExprKind::Number(v),
-                    span,
-                }
+                let v = p.as_str().parse::<f64>().ok().filter(|v| v.is_finite());
+                self.number(v, span)
             }
+            Rule::plain_vector => self.plain_vector(&p, span),
             Rule::string => {
                 let inner = p.into_inner().next().expect("string inner");
                 let text = self.unescape(&inner);
@@ -570,6 +558,49 @@ impl Lowerer {
                 }
             }
             other => unreachable!("not an expression rule: {other:?}"),
+        }
+    }
+
+    /// A number literal; one too large for an `f64` is reported and reads as 0.
+    fn number(&mut self, v: Option<f64>, span: Span) -> Expr {
+        let v = v.unwrap_or_else(|| {
+            self.diags.push(
+                Diagnostic::error(codes::BAD_NUMBER, span, "number too large")
+                    .with_label("this does not fit in a 64-bit float")
+                    .with_help("use a number below 1.8e308"),
+            );
+            0.0
+        });
+        Expr {
+            kind: ExprKind::Number(v),
+            span,
+        }
+    }
+
+    /// `<1, -2, 3>` read by `plain_vector`: the same expressions `vector` gives
+    /// (a signed component is the sign applied to the number).
+    fn plain_vector(&mut self, p: &P, span: Span) -> Expr {
+        let (file, base) = (self.file, span.start as usize);
+        let at = |a: usize, b: usize| Span::new(file, base + a, base + b);
+        let parts = super::data::vector_components(p.as_str())
+            .into_iter()
+            .map(|c| {
+                let n = self.number(c.value, at(c.start, c.end));
+                match c.sign {
+                    None => n,
+                    Some((negative, i)) => Expr {
+                        kind: ExprKind::Unary(
+                            if negative { UnOp::Neg } else { UnOp::Plus },
+                            Box::new(n),
+                        ),
+                        span: at(i, c.end),
+                    },
+                }
+            })
+            .collect();
+        Expr {
+            kind: ExprKind::Vector(parts),
+            span,
         }
     }
 

@@ -401,6 +401,28 @@ mod tests {
         }
     }
 
+    /// A vector of plain numbers is read in one step, into the expressions the
+    /// general path gives (same signs, numbers and spans).
+    #[test]
+    fn plain_vectors_lower_like_vectors() {
+        let components = |src: &str| {
+            let f = ok(src);
+            let ast::Item::Directive(d) = &f.items[0] else {
+                panic!("a directive")
+            };
+            let text = format!("{d:?}");
+            let from = text.find("Vector(").expect("a vector");
+            text[from..].to_string()
+        };
+        let plain = components("#declare V = < 1, -2.5 ,+ 3e1>;");
+        let general = components("#declare V = < 1, -2.5 ,+ 3e1, A>;");
+        let cut = plain.rfind("Unary").expect("a signed component");
+        assert_eq!(plain[..cut], general[..cut]);
+        let (_, d) = parse("#declare V = <1e999, 0>;", FileId(0));
+        assert_eq!(d.len(), 1, "{d:#?}");
+        assert_eq!(d[0].code, codes::BAD_NUMBER);
+    }
+
     #[test]
     fn reports_several_errors() {
         let (_, d) = parse("sphere { 0, 1 ]\n", FileId(0));

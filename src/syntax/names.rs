@@ -93,7 +93,7 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         Rule::prefix_op => "`-`, `+` or `!`",
         Rule::dot => "`.`",
         Rule::index => "`[`",
-        Rule::vector => "a vector `<…>`",
+        Rule::vector | Rule::plain_vector => "a vector `<…>`",
         Rule::colour | Rule::colour_kw | Rule::colour_rgb_kw => "a colour",
         Rule::colour_part | Rule::colour_part_kw => {
             "`red`, `green`, `blue`, `filter` or `transmit`"
