@@ -137,7 +137,16 @@ pub struct BuildCache {
     top: Option<(Vec<(u32, Aabb)>, Bvh)>,
     /// The primitives that stood still in the previous build, and their tree.
     still: Option<(Vec<(u32, Aabb)>, Bvh)>,
+    /// The glyph prisms of the previous build (see [`Builder::glyphs`]).
+    glyphs: GlyphPrisms,
 }
+
+/// How many glyph prisms a [`BuildCache`] keeps at most.
+const KEPT_GLYPHS: usize = 4096;
+
+/// Glyph prisms by outline address and heights, each with its outline (held,
+/// so the address stays that outline's while the entry lives).
+type GlyphPrisms = FxHashMap<(usize, u64, u64), (Arc<[[DVec2; 4]]>, Arc<shapes::prism::Prism>)>;
 
 /// The primitives of a build, by the top-level object they were made of.
 struct Made {
@@ -214,6 +223,7 @@ fn same_bounds(a: &[(u32, Aabb)], b: &[(u32, Aabb)]) -> bool {
 pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
     let mut b = Builder {
         previous: std::mem::take(&mut cache.meshes),
+        previous_glyphs: std::mem::take(&mut cache.glyphs),
         ..Builder::default()
     };
     let default_texture = Arc::new(Texture::default());
@@ -256,6 +266,16 @@ pub fn build_cached(scene: &Scene, cache: &mut BuildCache) -> World {
     if known {
         cache.made = Some(made);
     }
+    // The glyphs used now, and as many of the others as fit under the cap
+    // (a text made again and again keeps its letters between builds).
+    let mut glyphs = std::mem::take(&mut b.glyphs);
+    for (k, v) in b.previous_glyphs.drain() {
+        if glyphs.len() >= KEPT_GLYPHS {
+            break;
+        }
+        glyphs.entry(k).or_insert(v);
+    }
+    cache.glyphs = glyphs;
     cache.meshes = b
         .meshes
         .iter()
@@ -363,7 +383,11 @@ struct Builder {
     /// Hierarchies of the previous build, by mesh address.
     previous: FxHashMap<usize, Arc<MeshAccel>>,
     /// Glyph prisms by outline address and heights, shared by repeated letters.
-    glyphs: FxHashMap<(usize, u64, u64), Arc<shapes::prism::Prism>>,
+    glyphs: GlyphPrisms,
+    /// The glyph prisms of earlier builds, taken over when used again (letters
+    /// made again and again, measured with `min_extent` each time, or a union
+    /// that `trace` builds again as it grows, keep their prisms).
+    previous_glyphs: GlyphPrisms,
     /// The meshes (data addresses) used since last taken.
     used: Vec<usize>,
 }
@@ -554,12 +578,17 @@ impl Builder {
                     h0.to_bits(),
                     h1.to_bits(),
                 );
+                let previous = &mut self.previous_glyphs;
                 let prism = self
                     .glyphs
                     .entry(key)
                     .or_insert_with(|| {
-                        Arc::new(shapes::prism::Prism::new(curves, h0, h1, false, false))
+                        previous.remove(&key).unwrap_or_else(|| {
+                            let prism = shapes::prism::Prism::new(curves, h0, h1, false, false);
+                            (curves.clone(), Arc::new(prism))
+                        })
                     })
+                    .1
                     .clone();
                 out.push((PrimShape::Prism(prism), Some(place)));
             }

@@ -31,6 +31,10 @@ const HUGE: f64 = 1e10;
 #[derive(Default)]
 pub(crate) struct BuiltObjects {
     kept: Vec<(Arc<Object>, Arc<World>)>,
+    /// What the last build made that the next can reuse (mesh hierarchies,
+    /// glyph prisms): a union grown in a loop and traced at every step is
+    /// built again each time, its meshes and letters not.
+    cache: crate::build::BuildCache,
 }
 
 impl Evaluator<'_> {
@@ -47,7 +51,10 @@ impl Evaluator<'_> {
             objects: vec![(**object).clone()],
             ..crate::scene::Scene::default()
         };
-        let world = Arc::new(crate::build::build(&scene));
+        let world = Arc::new(crate::build::build_cached(
+            &scene,
+            &mut self.built_objects.cache,
+        ));
         if kept.len() >= KEPT {
             kept.remove(0);
         }
