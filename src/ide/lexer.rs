@@ -82,21 +82,7 @@ pub fn tokenize(text: &str) -> Vec<Tok> {
             TokKind::Str
         } else if c.is_ascii_digit() || (c == b'.' && b.get(i + 1).is_some_and(u8::is_ascii_digit))
         {
-            while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.') {
-                i += 1;
-            }
-            if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
-                let mut j = i + 1;
-                if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
-                    j += 1;
-                }
-                if j < b.len() && b[j].is_ascii_digit() {
-                    i = j;
-                    while i < b.len() && b[i].is_ascii_digit() {
-                        i += 1;
-                    }
-                }
-            }
+            i = crate::syntax::data::number_end(b, i);
             TokKind::Number
         } else if c.is_ascii_alphabetic() || c == b'_' {
             while i < b.len() && is_word(b[i]) {

@@ -183,21 +183,7 @@ pub fn vector_components(text: &str) -> Vec<Component> {
             i = skip_gap(b, i + 1);
         }
         let start = i;
-        while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.') {
-            i += 1;
-        }
-        if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
-            let mut j = i + 1;
-            if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
-                j += 1;
-            }
-            if j < b.len() && b[j].is_ascii_digit() {
-                while j < b.len() && b[j].is_ascii_digit() {
-                    j += 1;
-                }
-                i = j;
-            }
-        }
+        i = number_end(b, i);
         let value = text[start..i].parse::<f64>().ok().filter(|v| v.is_finite());
         out.push(Component {
             sign,
@@ -352,6 +338,27 @@ fn plain_number(b: &[u8], mut i: usize) -> Option<usize> {
     Some(i)
 }
 
+/// Where the digits of a number starting at `i` end: digits and points, then
+/// an exponent (`e`, an optional sign, digits) when one follows.
+pub fn number_end(b: &[u8], mut i: usize) -> usize {
+    while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.') {
+        i += 1;
+    }
+    if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
+        let mut j = i + 1;
+        if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
+            j += 1;
+        }
+        if j < b.len() && b[j].is_ascii_digit() {
+            while j < b.len() && b[j].is_ascii_digit() {
+                j += 1;
+            }
+            i = j;
+        }
+    }
+    i
+}
+
 /// Skips spaces and comments (`// …` to the line's end, nested `/* … */`).
 fn skip_gap(b: &[u8], mut i: usize) -> usize {
     loop {
@@ -377,21 +384,7 @@ fn number(text: &str, mut i: usize) -> Result<(f64, usize), BadNumber> {
         i = skip_gap(b, i + 1);
     }
     let digits = i;
-    while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.') {
-        i += 1;
-    }
-    if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
-        let mut j = i + 1;
-        if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
-            j += 1;
-        }
-        if j < b.len() && b[j].is_ascii_digit() {
-            while j < b.len() && b[j].is_ascii_digit() {
-                j += 1;
-            }
-            i = j;
-        }
-    }
+    i = number_end(b, i);
     match text[digits..i].parse::<f64>() {
         Ok(v) if v.is_finite() => Ok((if negative { -v } else { v }, i)),
         _ => Err(BadNumber { start, end: i }),
