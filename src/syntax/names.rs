@@ -110,7 +110,8 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         | Rule::data_number
         | Rule::data_gap
         | Rule::data_body
-        | Rule::data_text => "a number or a vector",
+        | Rule::data_text
+        | Rule::data_start => "a number or a vector",
         Rule::string | Rule::string_inner => "a string",
         Rule::ident_char => return None,
         Rule::keyword | Rule::keyword_word | Rule::reserved_word => "a keyword",
