@@ -574,3 +574,48 @@ fn image_maps_decode_pixels_as_povray_3_7_does() {
         assert_eq!(got, want, "{head} {gamma}");
     }
 }
+
+/// An isosurface far steeper than its `max_gradient`: `rts check` warns from a
+/// grid of samples before any render; `rts render` (which does not sample)
+/// warns once after the picture from the slopes its rays met, as POV-Ray does,
+/// and not at all when the bound holds.
+#[test]
+fn max_gradient_is_warned_about_by_check_and_after_a_render() {
+    let scene = |g: f64| {
+        format!(
+            "#version 3.7;\nglobal_settings {{ assumed_gamma 1.0 }}\n\
+             camera {{ location <0, 0, -4> look_at 0 }}\n\
+             light_source {{ <5, 5, -5> color rgb 1 }}\n\
+             isosurface {{\n  function {{ x*x + y*y + z*z - 1 + 0.3*sin(20*z) }}\n  \
+             max_gradient {g}\n  contained_by {{ box {{ -2, 2 }} }}\n  pigment {{ color rgb 1 }}\n}}\n"
+        )
+    };
+    let warnings = |out: &str| -> Vec<String> {
+        out.lines()
+            .map(|l| serde_json::from_str::<serde_json::Value>(l).expect("json line"))
+            .filter(|v| v["code"] == "rts::lint::max_gradient")
+            .map(|v| v["message"].as_str().unwrap().to_string())
+            .collect()
+    };
+    let low = write("iso_low.rts", &scene(0.5));
+    let (code, out, err) = rts(&["check", &low, "--message-format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let w = warnings(&out);
+    assert_eq!(w.len(), 1, "{out}");
+    assert!(w[0].contains("measured"), "{w:?}");
+    let png = std::env::temp_dir().join(format!("rts-iso-{}.png", std::process::id()));
+    let png = png.display().to_string();
+    let render = |p: &str| {
+        let (code, out, err) = rts(&[
+            "render", p, "-W", "40", "-H", "30", "-o", &png, "-q", "--message-format", "json",
+        ]);
+        assert_eq!(code, 0, "{err}");
+        warnings(&out)
+    };
+    let w = render(&low);
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(w[0].contains("the render met"), "{w:?}");
+    // The slope along the camera's rays is at most 2 + 6 = 8 here: 12 holds.
+    let high = write("iso_high.rts", &scene(12.0));
+    assert_eq!(render(&high), Vec::<String>::new());
+}

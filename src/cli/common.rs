@@ -76,6 +76,11 @@ pub struct Parsed {
     pub diagnostics: Vec<Diagnostic>,
     /// What one evaluation keeps for the next (includes, meshes).
     pub cache: eval::EvalCache,
+    /// The isosurfaces the evaluations asked the render to check, not yet
+    /// warned about.
+    pub slope_checks: Vec<eval::SlopeCheck>,
+    /// Where those warned about are.
+    pub slope_warned: Vec<rts::span::Span>,
 }
 
 /// Reads and parses `path`, a regular file of at most `max_size` bytes. `Err` when
@@ -108,6 +113,8 @@ pub fn parse(path: &Path, max_size: u64) -> Result<Parsed, String> {
                 file: None,
                 diagnostics: vec![*d],
                 cache: eval::EvalCache::default(),
+                slope_checks: Vec::new(),
+        slope_warned: Vec::new(),
             });
         }
     };
@@ -123,10 +130,27 @@ pub fn parse(path: &Path, max_size: u64) -> Result<Parsed, String> {
         file,
         diagnostics,
         cache: eval::EvalCache::default(),
+        slope_checks: Vec::new(),
+        slope_warned: Vec::new(),
     })
 }
 
 impl Parsed {
+    /// The `max_gradient` warnings of the renders so far (POV-Ray's, after a
+    /// render): each isosurface is warned about once.
+    pub fn slope_warnings(&mut self) -> Vec<Diagnostic> {
+        let mut out = Vec::new();
+        self.slope_checks.retain(|c| match c.warning() {
+            Some(w) => {
+                out.push(w);
+                self.slope_warned.push(c.span);
+                false
+            }
+            None => true,
+        });
+        out
+    }
+
     /// Evaluates the scene with `options`: the scene when there was no error, and
     /// the evaluation's diagnostics.
     pub fn eval(&mut self, options: &EvalOptions) -> (Option<Scene>, Vec<Diagnostic>) {
@@ -135,6 +159,18 @@ impl Parsed {
         };
         let evaluated =
             eval::eval_cached(file, self.id, &mut self.sources, options, &mut self.cache);
+        for check in evaluated.slope_checks {
+            // An item evaluated again for a later frame: its new isosurface is
+            // the one the next render meets (the last one's was checked after
+            // its render); one warned about already is not checked again.
+            if self.slope_warned.contains(&check.span) {
+                continue;
+            }
+            match self.slope_checks.iter_mut().find(|c| c.span == check.span) {
+                Some(old) => *old = check,
+                None => self.slope_checks.push(check),
+            }
+        }
         let scene = (!rts::diag::has_errors(&evaluated.diagnostics)).then_some(evaluated.scene);
         (scene, evaluated.diagnostics)
     }

@@ -158,6 +158,11 @@ impl<'a> Renderer<'a> {
                 Some(pool) => pool.install(job),
                 None => job(),
             };
+            // POV-Ray's warning after a render: an isosurface steeper than
+            // its max_gradient.
+            let warned = parsed.slope_warnings();
+            self.messages
+                .print(&warned, &parsed.sources, self.sequence.then_some(frame));
             match &mut out {
                 None => {
                     out = Some(Image {

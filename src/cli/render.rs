@@ -393,6 +393,8 @@ pub fn run(args: &RenderArgs) -> i32 {
         Ok(o) => rts::eval::EvalOptions {
             write_files: true,
             reuse: !args.no_eval_cache,
+            // The render measures isosurfaces' slopes as it goes.
+            sample_gradients: false,
             ..o
         },
         Err(e) => return usage(e),
@@ -559,10 +561,13 @@ pub fn run(args: &RenderArgs) -> i32 {
             ..r.settings
         };
         let size = (width, height);
-        return super::path_opts::run(
+        let code = super::path_opts::run(
             args, &scene, size, &output, format, &settings, t_start, t_parse,
         )
         .unwrap_or(EXIT_OK);
+        let warned = parsed.slope_warnings();
+        common::print(&warned, &parsed.sources, args.scene.message_format);
+        return code;
     }
     let img = match r.image(&mut parsed, &instants, first, frame_no as u32) {
         Ok(i) => i,

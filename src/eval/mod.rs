@@ -130,6 +130,11 @@ pub struct EvalOptions {
     /// instead of evaluating them again (same scene; `--no-eval-cache` turns
     /// it off).
     pub reuse: bool,
+    /// Whether an isosurface's function is sampled on a grid in its container
+    /// when it is read, for the `max_gradient` warning (`rts check`, the
+    /// editor: no render follows). A render leaves it off and warns from the
+    /// slopes its rays met instead, as POV-Ray does ([`Evaluated::slope_checks`]).
+    pub sample_gradients: bool,
 }
 
 impl Default for EvalOptions {
@@ -164,6 +169,7 @@ impl Default for EvalOptions {
             max_write: 256 << 20,
             max_source_size: MAX_SOURCE_SIZE,
             reuse: true,
+            sample_gradients: true,
         }
     }
 }
@@ -178,6 +184,43 @@ pub struct Evaluated {
     pub diagnostics: Vec<Diagnostic>,
     /// The global names defined at the end of evaluation, for editors (hover).
     pub globals: Vec<Declared>,
+    /// The isosurfaces whose `max_gradient` the render is to check (without
+    /// [`EvalOptions::sample_gradients`]).
+    pub slope_checks: Vec<SlopeCheck>,
+}
+
+/// An isosurface's `max_gradient` and the meter of the slopes the render meets
+/// in it: after rendering, [`SlopeCheck::warning`] says whether it was too low.
+#[derive(Clone, Debug)]
+pub struct SlopeCheck {
+    /// The meter the renderer fills.
+    pub meter: crate::scene::SlopeMeter,
+    /// The `max_gradient` the isosurface was given.
+    pub max_gradient: f64,
+    /// Its `max_gradient` (or, when not written, its function).
+    pub span: Span,
+}
+
+impl SlopeCheck {
+    /// POV-Ray's warning after a render, when a ray met a slope above
+    /// `max_gradient` (the surface may have holes there).
+    pub fn warning(&self) -> Option<Diagnostic> {
+        let found = self.meter.steepest();
+        (found > self.max_gradient).then(|| {
+            Diagnostic::warning(
+                crate::diag::codes::MAX_GRADIENT,
+                self.span,
+                format!(
+                    "max_gradient {} is below the function's slope the render met (up to {:.3}): the surface may show holes",
+                    self.max_gradient, found
+                ),
+            )
+            .with_help(format!(
+                "write `max_gradient {:.3}` (a larger value is safe but slower)",
+                found * 1.05
+            ))
+        })
+    }
 }
 
 /// A global name as evaluation left it: where it was last declared and its value.

@@ -32,7 +32,7 @@ pub use blob::{BlobComponent, BlobData, BlobKind};
 pub use camera::{Camera, CameraFace, CameraKind, CameraMesh, MeshCamera, UvGrid};
 pub use density::{DensityGrid, DF3_MAX_VOXELS};
 pub use function::Function;
-pub use isosurface::{Container, Isosurface};
+pub use isosurface::{Container, Isosurface, SlopeMeter};
 pub use julia::{Algebra, Julia, JuliaFn};
 pub use light::{AreaLight, Beam, Light, LightKind};
 pub use material::{

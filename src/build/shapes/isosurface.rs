@@ -109,11 +109,17 @@ impl Isosurface {
             }
         }
         let mut steps = 0;
+        // The steepest secant between march points (a lower bound on the
+        // function's slope), for the warning after the render.
+        let mut steepest = 0.0f64;
         while t < b && steps < MAX_STEPS {
             steps += 1;
             let step = (gt.abs() / slope).max(min_step);
             let tn = (t + step).min(b);
             let gn = self.g(ray.at(tn));
+            if tn > t && gn != f64::MAX && gt != f64::MAX {
+                steepest = steepest.max((gn - gt).abs() / (tn - t));
+            }
             if (gt < 0.0) != (gn < 0.0) {
                 // Bisect to the accuracy.
                 let (mut lo, mut hi, mut glo) = (t, tn, gt);
@@ -121,6 +127,9 @@ impl Isosurface {
                     steps += 1;
                     let mid = 0.5 * (lo + hi);
                     let gm = self.g(ray.at(mid));
+                    if gm != f64::MAX && glo != f64::MAX && mid > lo {
+                        steepest = steepest.max((gm - glo).abs() / (mid - lo));
+                    }
                     if (gm < 0.0) == (glo < 0.0) {
                         lo = mid;
                         glo = gm;
@@ -136,6 +145,7 @@ impl Isosurface {
                     f(root, 0);
                     found += 1;
                     if found >= limit {
+                        self.note_slope(steepest, len);
                         return;
                     }
                 }
@@ -143,8 +153,18 @@ impl Isosurface {
             t = tn;
             gt = gn;
         }
+        self.note_slope(steepest, len);
         if t1 < t_max && !self.open && gt < 0.0 && t1 > t_min {
             f(t1, 1);
+        }
+    }
+
+    /// Notes `steepest` (a slope per unit of the ray's parameter; `len` the
+    /// length of its direction) when it exceeds `max_gradient`.
+    fn note_slope(&self, steepest: f64, len: f64) {
+        let slope = steepest / len;
+        if slope > self.max_gradient {
+            self.steepest.observe(slope);
         }
     }
 
@@ -260,6 +280,7 @@ mod tests {
             max_gradient: 1.1,
             open,
             max_trace: 0,
+            steepest: Default::default(),
         }
     }
 
@@ -295,5 +316,24 @@ mod tests {
     fn measured_gradient_of_distance_is_one() {
         let g = iso(false, 2.0).measured_gradient();
         assert!((g - 1.0).abs() < 1e-3, "{g}");
+    }
+
+    #[test]
+    fn the_march_notes_slopes_above_max_gradient_only() {
+        // A distance function (slope 1) under its bound 1.1: nothing noted,
+        // whatever the ray's length.
+        let s = iso(false, 2.0);
+        let ray = Ray::new(DVec3::new(0.1, 0.2, -5.0), DVec3::Z * 3.0);
+        s.nearest(&ray, 0.0, f64::INFINITY);
+        assert_eq!(s.steepest.steepest(), 0.0);
+        // The same surface with a bound below its slope: the slope is noted,
+        // in object units (the direction's length divided out).
+        let mut low = iso(false, 2.0);
+        low.max_gradient = 0.5;
+        low.nearest(&ray, 0.0, f64::INFINITY);
+        let seen = low.steepest.steepest();
+        assert!(seen > 0.5 && seen <= 1.0 + 1e-9, "{seen}");
+        // Copies share the meter.
+        assert_eq!(low.clone().steepest.steepest(), seen);
     }
 }

@@ -46,6 +46,8 @@ pub(crate) struct Evaluator<'a> {
     pub(crate) options: &'a EvalOptions,
     pub(crate) scope: Scopes,
     pub(crate) diags: Vec<Diagnostic>,
+    /// The isosurfaces the render is to check (`EvalOptions::sample_gradients` off).
+    pub(crate) slope_checks: Vec<crate::eval::SlopeCheck>,
     pub(crate) scene: Scene,
     pub(crate) camera_seen: Option<Span>,
     /// Include and macro-call sites on the way to the current item, outermost first.
@@ -172,6 +174,7 @@ impl<'a> Evaluator<'a> {
             options,
             scope,
             diags: Vec::new(),
+            slope_checks: Vec::new(),
             scene: Scene::default(),
             camera_seen: None,
             trace: Vec::new(),
@@ -387,6 +390,7 @@ impl<'a> Evaluator<'a> {
             scene: self.scene,
             diagnostics: self.diags,
             globals,
+            slope_checks: self.slope_checks,
         }
     }
 }

@@ -86,22 +86,10 @@ impl Evaluator<'_> {
             max_gradient: spec.max_gradient,
             open: spec.open,
             max_trace: spec.max_trace,
+            steepest: Default::default(),
         };
-        let measured = iso.measured_gradient();
-        if measured > iso.max_gradient * 1.5 {
-            let at = spec.max_gradient_span.unwrap_or(fspan);
-            self.warn(
-                Diagnostic::warning(
-                    codes::MAX_GRADIENT,
-                    at,
-                    format!(
-                        "max_gradient {} is below the function's slope in the container (about {:.3} measured): the surface may show holes",
-                        iso.max_gradient, measured
-                    ),
-                )
-                .with_help(format!("write `max_gradient {:.3}` (a larger value is safe but slower)", measured * 1.05)),
-            );
-        }
+        let at = spec.max_gradient_span.unwrap_or(fspan);
+        self.check_gradient(&iso, at);
         Ok(Shape::Isosurface(Arc::new(iso)))
     }
 
@@ -230,12 +218,46 @@ impl Evaluator<'_> {
             max_trace: iso.max_trace,
         };
         self.isosurface_item(tok, c, &mut spec)?;
+        let regrade = spec.max_gradient != iso.max_gradient;
         let it = Arc::make_mut(iso);
         it.threshold = spec.threshold;
         it.accuracy = spec.accuracy;
         it.max_gradient = spec.max_gradient;
         it.open = spec.open;
         it.max_trace = spec.max_trace;
+        if regrade {
+            // Another bound: measured on its own.
+            it.steepest = Default::default();
+            let at = spec.max_gradient_span.unwrap_or(c.span);
+            self.check_gradient(&iso.clone(), at);
+        }
         Ok(())
+    }
+
+    /// The `max_gradient` warning for `iso`, at `at`: from a grid of samples
+    /// now when no render follows, else from what the render meets.
+    fn check_gradient(&mut self, iso: &Isosurface, at: Span) {
+        if !self.options.sample_gradients {
+            self.slope_checks.push(crate::eval::SlopeCheck {
+                meter: iso.steepest.clone(),
+                max_gradient: iso.max_gradient,
+                span: at,
+            });
+            return;
+        }
+        let measured = iso.measured_gradient();
+        if measured > iso.max_gradient * 1.5 {
+            self.warn(
+                Diagnostic::warning(
+                    codes::MAX_GRADIENT,
+                    at,
+                    format!(
+                        "max_gradient {} is below the function's slope in the container (about {:.3} measured): the surface may show holes",
+                        iso.max_gradient, measured
+                    ),
+                )
+                .with_help(format!("write `max_gradient {:.3}` (a larger value is safe but slower)", measured * 1.05)),
+            );
+        }
     }
 }
