@@ -607,7 +607,17 @@ fn max_gradient_is_warned_about_by_check_and_after_a_render() {
     let png = png.display().to_string();
     let render = |p: &str| {
         let (code, out, err) = rts(&[
-            "render", p, "-W", "40", "-H", "30", "-o", &png, "-q", "--message-format", "json",
+            "render",
+            p,
+            "-W",
+            "40",
+            "-H",
+            "30",
+            "-o",
+            &png,
+            "-q",
+            "--message-format",
+            "json",
         ]);
         assert_eq!(code, 0, "{err}");
         warnings(&out)
