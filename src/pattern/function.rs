@@ -11,7 +11,11 @@ impl Function {
     /// missing ones read as 0). A colour-valued function gives its gray value.
     pub fn eval(&self, args: &[f64]) -> f64 {
         match &self.body {
-            Body::Float(ops) => run(ops, args),
+            // No operation grows the stack by more than one value, so a
+            // short program runs on a short stack (zeroed on every call).
+            Body::Float(ops) if ops.len() <= 8 => run::<8>(ops, args),
+            Body::Float(ops) if ops.len() <= 24 => run::<24>(ops, args),
+            Body::Float(ops) => run::<MAX_STACK>(ops, args),
             Body::Pigment(_) => self.component(args, 5),
             Body::Spline(_) => self.component(args, 0),
             Body::Pattern(p) => pattern_value(p, point(args)),
@@ -75,10 +79,12 @@ fn b(c: bool) -> f64 {
     f64::from(u8::from(c))
 }
 
-/// Runs a float program. The compiler guarantees the stack never exceeds
-/// [`MAX_STACK`] and every operator finds its operands.
-fn run(ops: &[Op], args: &[f64]) -> f64 {
-    let mut st = [0.0f64; MAX_STACK];
+/// Runs a float program on a stack of `N` values. The compiler guarantees the
+/// stack never exceeds [`MAX_STACK`] and every operator finds its operands; no
+/// operation adds more than one value, so `N` at least the program's length
+/// (or [`MAX_STACK`]) is enough.
+fn run<const N: usize>(ops: &[Op], args: &[f64]) -> f64 {
+    let mut st = [0.0f64; N];
     let mut sp = 0usize;
     macro_rules! bin {
         ($f:expr) => {{
@@ -176,6 +182,19 @@ mod tests {
             arity: 3,
             body: Body::Float(ops),
             depth: 1,
+        }
+    }
+
+    #[test]
+    fn programs_as_deep_as_they_are_long_fit_each_stack_size() {
+        // n constants then n - 1 additions: depth n, length 2n - 1; and n
+        // constants alone, depth = length, at each stack size's limit.
+        for n in [1usize, 4, 5, 8, 9, 12, 13, 24, 25, 32] {
+            let mut ops: Vec<Op> = (1..=n).map(|k| Op::Const(k as f64)).collect();
+            assert_eq!(f(ops.clone()).eval(&[]), n as f64);
+            ops.extend((1..n).map(|_| Op::Add));
+            assert_eq!(max_depth(&ops), Some(n));
+            assert_eq!(f(ops).eval(&[]), (n * (n + 1) / 2) as f64);
         }
     }
 
