@@ -4,7 +4,7 @@
 //! walk by [`super::wide`] (8-wide nodes) or [`super::binary`] (f64 nodes).
 
 use super::Aabb;
-use glam::Vec3;
+use glam::{Vec3, Vec3A};
 
 /// Number of SAH bins per axis.
 const BINS: usize = 16;
@@ -18,17 +18,17 @@ const PAR_MIN: usize = 20_000;
 /// Parallel build down to this depth (2^depth tasks).
 const PAR_DEPTH: usize = 6;
 
-/// An f32 box.
+/// An f32 box (in SIMD-width vectors: a union is two instructions).
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Box32 {
-    pub(super) min: Vec3,
-    pub(super) max: Vec3,
+    pub(super) min: Vec3A,
+    pub(super) max: Vec3A,
 }
 
 impl Box32 {
     pub(super) const EMPTY: Box32 = Box32 {
-        min: Vec3::splat(f32::INFINITY),
-        max: Vec3::splat(f32::NEG_INFINITY),
+        min: Vec3A::splat(f32::INFINITY),
+        max: Vec3A::splat(f32::NEG_INFINITY),
     };
 
     /// The f32 box holding `b` (rounded outwards).
@@ -43,8 +43,8 @@ impl Box32 {
             }
         };
         Box32 {
-            min: Vec3::new(down(b.min.x), down(b.min.y), down(b.min.z)),
-            max: Vec3::new(up(b.max.x), up(b.max.y), up(b.max.z)),
+            min: Vec3A::new(down(b.min.x), down(b.min.y), down(b.min.z)),
+            max: Vec3A::new(up(b.max.x), up(b.max.y), up(b.max.z)),
         }
     }
 
@@ -55,11 +55,17 @@ impl Box32 {
         }
     }
 
-    fn grow(&self, p: Vec3) -> Box32 {
+    fn grow(&self, p: Vec3A) -> Box32 {
         Box32 {
             min: self.min.min(p),
             max: self.max.max(p),
         }
+    }
+
+    /// The box's centre (where the build bins it).
+    #[inline]
+    fn centre(&self) -> Vec3A {
+        (self.min + self.max) * 0.5
     }
 
     pub(super) fn half_area(&self) -> f32 {
@@ -93,8 +99,8 @@ impl Node {
 /// Half the surface area of a node's box.
 pub(super) fn area(n: &Node) -> f32 {
     Box32 {
-        min: n.min,
-        max: n.max,
+        min: n.min.into(),
+        max: n.max.into(),
     }
     .half_area()
 }
@@ -116,13 +122,13 @@ fn choose_split(order: &mut [u32], depth: usize, input: &Input, cb: &Box32) -> O
     }
     if depth >= MAX_SAH_DEPTH {
         // Deep, lopsided trees could overflow the traversal stack: halve by count.
-        return Some(median_split(order, &input.cents, cb));
+        return Some(median_split(order, &input.boxes, cb));
     }
     let (axis, pos) = best_split(order, input, cb)?;
     Some(
-        match partition(order, |&k| input.cents[k as usize][axis] < pos) {
-            0 => median_split(order, &input.cents, cb),
-            m if m == order.len() => median_split(order, &input.cents, cb),
+        match partition(order, |&k| input.boxes[k as usize].centre()[axis] < pos) {
+            0 => median_split(order, &input.boxes, cb),
+            m if m == order.len() => median_split(order, &input.boxes, cb),
             m => m,
         },
     )
@@ -141,8 +147,8 @@ fn spans(order: &[u32], input: &Input) -> (Box32, Box32) {
     let seq = |part: &[u32]| {
         part.iter()
             .fold((Box32::EMPTY, Box32::EMPTY), |(b, c), &k| {
-                let k = k as usize;
-                (b.union(&input.boxes[k]), c.grow(input.cents[k]))
+                let k = &input.boxes[k as usize];
+                (b.union(k), c.grow(k.centre()))
             })
     };
     if order.len() < PAR_PASS {
@@ -159,16 +165,21 @@ type Bins = [[(Box32, u32); BINS]; 3];
 
 /// Bins `part` (centroid bin = (centroid - `min`) × `scale`, clamped), with the
 /// bounds of all its boxes.
-fn bin(part: &[u32], input: &Input, min: Vec3, scale: Vec3) -> (Bins, Box32) {
+fn bin(part: &[u32], input: &Input, min: Vec3A, scale: Vec3A) -> (Bins, Box32) {
     let mut bins = [[(Box32::EMPTY, 0u32); BINS]; 3];
     let mut parent = Box32::EMPTY;
     for &k in part {
         let k = k as usize;
         let b = &input.boxes[k];
         parent = parent.union(b);
-        let rel = (input.cents[k] - min) * scale;
+        // The bin along each axis, clamped to the bins (NaN to the first) in
+        // floats, where the conversion is one instruction.
+        let rel = ((b.centre() - min) * scale)
+            .max(Vec3A::ZERO)
+            .min(Vec3A::splat((BINS - 1) as f32))
+            .to_array();
         for axis in 0..3 {
-            let i = (rel[axis] as usize).min(BINS - 1);
+            let i = rel[axis] as i32 as usize;
             let e = &mut bins[axis][i];
             e.0 = e.0.union(b);
             e.1 += 1;
@@ -179,8 +190,8 @@ fn bin(part: &[u32], input: &Input, min: Vec3, scale: Vec3) -> (Bins, Box32) {
 
 fn leaf_or_inner(bounds: Box32, first: u32, count: u32) -> Node {
     Node {
-        min: bounds.min,
-        max: bounds.max,
+        min: bounds.min.into(),
+        max: bounds.max.into(),
         first,
         count,
     }
@@ -251,7 +262,7 @@ fn best_split(order: &[u32], input: &Input, cb: &Box32) -> Option<(usize, f32)> 
     if !usable.iter().any(|&u| u) {
         return None;
     }
-    let scale = Vec3::new(
+    let scale = Vec3A::new(
         if usable[0] { BINS as f32 / ext.x } else { 0.0 },
         if usable[1] { BINS as f32 / ext.y } else { 0.0 },
         if usable[2] { BINS as f32 / ext.z } else { 0.0 },
@@ -307,7 +318,7 @@ fn best_split(order: &[u32], input: &Input, cb: &Box32) -> Option<(usize, f32)> 
 }
 
 /// Splits `order` in two equal halves along the widest centroid axis.
-fn median_split(order: &mut [u32], cents: &[Vec3], cb: &Box32) -> usize {
+fn median_split(order: &mut [u32], boxes: &[Box32], cb: &Box32) -> usize {
     let ext = cb.max - cb.min;
     let axis = if ext.x >= ext.y && ext.x >= ext.z {
         0
@@ -318,7 +329,8 @@ fn median_split(order: &mut [u32], cents: &[Vec3], cb: &Box32) -> usize {
     };
     let mid = order.len() / 2;
     order.select_nth_unstable_by(mid, |&a, &b| {
-        cents[a as usize][axis].total_cmp(&cents[b as usize][axis])
+        let (a, b) = (&boxes[a as usize], &boxes[b as usize]);
+        a.centre()[axis].total_cmp(&b.centre()[axis])
     });
     mid
 }
@@ -337,8 +349,8 @@ fn partition<T>(v: &mut [T], pred: impl Fn(&T) -> bool) -> usize {
 
 /// The build inputs shared by all tasks.
 struct Input {
+    /// The primitives' boxes (their centres are binned).
     boxes: Vec<Box32>,
-    cents: Vec<Vec3>,
     /// Sets this small or smaller become leaves.
     max_leaf: usize,
 }
@@ -347,12 +359,7 @@ struct Input {
 /// `first` and `first + 1`) and the primitive order its leaves index into.
 /// `boxes` must not be empty.
 pub(super) fn binary_tree(boxes: Vec<Box32>, max_leaf: usize) -> (Vec<Node>, Vec<u32>) {
-    let cents = boxes.iter().map(|b| (b.min + b.max) * 0.5).collect();
-    let input = Input {
-        boxes,
-        cents,
-        max_leaf,
-    };
+    let input = Input { boxes, max_leaf };
     let mut order: Vec<u32> = (0..input.boxes.len() as u32).collect();
     let nodes = build_sub(&mut order, 0, 0, &input);
     (nodes, order)

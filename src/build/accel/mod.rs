@@ -132,8 +132,8 @@ impl Bvh {
         // The inputs (36 bytes a primitive) are gone before the wide nodes are made.
         let (binary, order) = builder::binary_tree(boxes, max_leaf);
         let root = Box32 {
-            min: binary[0].min,
-            max: binary[0].max,
+            min: binary[0].min.into(),
+            max: binary[0].max.into(),
         };
         let (nodes, exact) = if wide {
             (wide::collapse(&binary), Vec::new())
