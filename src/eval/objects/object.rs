@@ -74,7 +74,7 @@ fn add_member(members: &mut Members, child: Object, op: Option<CsgOp>) -> u32 {
     if same_kind && plain {
         match child.shape {
             Shape::Union { children } | Shape::Csg { children, .. } if !children.is_empty() => {
-                members.append(children);
+                append_members(members, children);
                 return child.nesting;
             }
             _ => {}
@@ -83,6 +83,21 @@ fn add_member(members: &mut Members, child: Object, op: Option<CsgOp>) -> u32 {
     let nesting = child.nesting + 1;
     members.push_back(child);
     nesting
+}
+
+/// `members` followed by `more`, in time proportional to the shorter of the two
+/// (the longer one's tree is kept and the other's objects are moved onto it;
+/// joining the trees themselves copied nodes of objects on both sides).
+fn append_members(members: &mut Members, more: Members) {
+    if members.len() >= more.len() {
+        members.extend(more);
+    } else {
+        let mut merged = more;
+        for m in std::mem::take(members).into_iter().rev() {
+            merged.push_front(m);
+        }
+        *members = merged;
+    }
 }
 
 /// Applies a transform to an object (its texture moves with it: textures are kept in
