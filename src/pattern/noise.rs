@@ -264,15 +264,21 @@ pub fn turbulence(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    #[test]
-    fn floor_is_the_library_floor_bit_for_bit() {
-        let mut special = vec![
+    /// Coordinates that test a floor: signed zeros, halves, lattice edges, the
+    /// end of the exactly-integer range, huge, tiny, infinite and NaN values;
+    /// then `count` ordinary ones over twelve orders of magnitude, from a fixed
+    /// sequence.
+    fn awkward_values(count: usize) -> Vec<f64> {
+        let mut v = vec![
             0.0,
             -0.0,
             0.5,
             -0.5,
             1.0,
             -1.0,
+            255.0,
+            256.0,
+            -256.0,
             -1e-320,
             1e-320,
             4_503_599_627_370_495.5,
@@ -288,12 +294,17 @@ mod tests {
             f64::MAX,
             f64::MIN,
         ];
-        // And a spread of ordinary values, from a fixed sequence.
         let mut x = 0.123_456_789f64;
-        for k in 0..20_000 {
+        for k in 0..count as i32 {
             x = (x * 9_301.0 + 49_297.0) % 233_280.0;
-            special.push((x - 116_640.0) * 10f64.powi(k % 12 - 6));
+            v.push((x - 116_640.0) * 10f64.powi(k % 12 - 6));
         }
+        v
+    }
+
+    #[test]
+    fn floor_is_the_library_floor_bit_for_bit() {
+        let special = awkward_values(20_000);
         for x in special {
             let (a, b) = (floor(x), x.floor());
             assert!(
@@ -342,34 +353,7 @@ mod tests {
 
     #[test]
     fn noise_equals_the_reference_bit_for_bit() {
-        let mut coords = vec![
-            0.0,
-            -0.0,
-            0.5,
-            -0.5,
-            1.0,
-            -1.0,
-            255.0,
-            256.0,
-            -256.0,
-            -1e-320,
-            4_503_599_627_370_495.5,
-            -4_503_599_627_370_495.5,
-            4_503_599_627_370_496.0,
-            9.3e18,
-            -9.3e18,
-            1e300,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NAN,
-            f64::MAX,
-            f64::MIN,
-        ];
-        let mut x = 0.987_654_321f64;
-        for k in 0..3_000 {
-            x = (x * 9_301.0 + 49_297.0) % 233_280.0;
-            coords.push((x - 116_640.0) * 10f64.powi(k % 10 - 7));
-        }
+        let coords = awkward_values(3_000);
         let n = coords.len();
         for a in 0..n {
             for b in [a, (a * 7 + 3) % n, (a * 13 + 5) % n] {
