@@ -74,6 +74,8 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         Rule::expr
         | Rule::chain
         | Rule::sum
+        | Rule::la_sum
+        | Rule::la_operand
         | Rule::operand
         | Rule::primary
         | Rule::paren
