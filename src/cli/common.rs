@@ -114,7 +114,7 @@ pub fn parse(path: &Path, max_size: u64) -> Result<Parsed, String> {
                 diagnostics: vec![*d],
                 cache: eval::EvalCache::default(),
                 slope_checks: Vec::new(),
-        slope_warned: Vec::new(),
+                slope_warned: Vec::new(),
             });
         }
     };
