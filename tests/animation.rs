@@ -185,6 +185,54 @@ animation { frames 0, 8  fps 4  clock_range 10, 12 }
     );
 }
 
+/// Keys in seconds and frames on a clock that runs backwards (`clock_range 12,
+/// 10`) give, frame by frame, what they give on the same clock forwards: keys
+/// are placed in time, whichever way the clock goes (it once panicked).
+#[test]
+fn keys_in_time_units_follow_a_backwards_clock() {
+    let dir = scratch("keys_back");
+    let scene = |range: &str| {
+        format!(
+            r#"
+#version 3.7;
+global_settings {{ assumed_gamma 1.0 }}
+animation {{ frames 0, 8  fps 4  clock_range {range} }}
+#declare S = keyframes {{ seconds catmull_rom key 0, 1  key 1, 3 ease_in  key 2, 7 }};
+#declare F = keyframes {{ frames bezier_spline key 0, <1, 2, 3>  key 4, <4, 5, 6> tangent <1, 0, 0>  key 8, <0, 0, 0> }};
+#declare N = keyframes {{ seconds natural_spline ping_pong key 0, 1.5  key 0.5, -3  key 1.5, 7 }};
+#debug concat("V ", str(S, 0, 17), " ", vstr(3, F, " ", 0, 17), " ", str(N, 0, 17), "\n")
+"#
+        )
+    };
+    std::fs::write(dir.join("forward.rts"), scene("10, 12")).unwrap();
+    std::fs::write(dir.join("backward.rts"), scene("12, 10")).unwrap();
+    let values = |file: &str, frame: u32| -> Vec<f64> {
+        let frame = frame.to_string();
+        let line = debug_line(
+            &dir,
+            &[
+                "render", file, "-o", "k.png", "-W", "4", "-H", "4", "-q", "--frame", &frame,
+            ],
+        );
+        let v = line.split("V ").nth(1).expect("values");
+        v.split_whitespace().map(|x| x.parse().unwrap()).collect()
+    };
+    for frame in 0..=8 {
+        let (f, b) = (values("forward.rts", frame), values("backward.rts", frame));
+        assert_eq!(f.len(), 5);
+        for (x, y) in f.iter().zip(&b) {
+            assert!((x - y).abs() < 1e-9, "frame {frame}: {f:?} vs {b:?}");
+        }
+        if frame == 4 {
+            // Second 1 and frame 4 are keys: their values exactly.
+            assert!(
+                (f[0] - 3.0).abs() < 1e-12 && (f[1] - 4.0).abs() < 1e-12,
+                "{f:?}"
+            );
+        }
+    }
+}
+
 #[test]
 fn povray_clock_variables() {
     let dir = scratch("clockvars");

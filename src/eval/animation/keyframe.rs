@@ -127,6 +127,10 @@ pub struct Keyframes {
     /// `rotate`: the values are rotations (`rotate <x, y, z>` in degrees), joined
     /// along the shortest arc (quaternion slerp).
     pub rotation: bool,
+    /// The keys' times are the clock negated: keys given in seconds or frames
+    /// on a timeline whose clock runs backwards (`clock_range 5, 1`) come in
+    /// decreasing clock order, so they are kept in time order on `-clock`.
+    pub reversed: bool,
     natural: Option<Spline>,
 }
 
@@ -145,6 +149,7 @@ impl Keyframes {
             interp,
             extrapolate,
             rotation: false,
+            reversed: false,
             natural,
         }
     }
@@ -162,6 +167,7 @@ impl Keyframes {
 
     /// The value at clock time `t`.
     pub fn eval(&self, t: f64) -> [f64; 5] {
+        let t = if self.reversed { -t } else { t };
         let ks = &self.keys;
         let n = ks.len();
         if n == 1 {
@@ -170,7 +176,11 @@ impl Keyframes {
         let (t0, tn) = (ks[0].t, ks[n - 1].t);
         let len = tn - t0;
         let t = match self.extrapolate {
-            Extrapolate::Hold => t.clamp(t0, tn),
+            // All keys at one clock (a timeline whose clock does not move):
+            // held, as there is no length to repeat. `max`/`min`, not
+            // `clamp`: nothing here may panic.
+            _ if !(len > 0.0) => t.max(t0).min(tn),
+            Extrapolate::Hold => t.max(t0).min(tn),
             Extrapolate::Loop if t < t0 || t > tn => t0 + (t - t0).rem_euclid(len),
             Extrapolate::PingPong if t < t0 || t > tn => {
                 let x = (t - t0).rem_euclid(2.0 * len);
@@ -405,6 +415,13 @@ impl Evaluator<'_> {
             tl.initial_clock.max(tl.final_clock),
         );
         let has_timeline = self.has_timeline();
+        // Keys in seconds or frames on a clock that runs backwards land in
+        // decreasing clock order: they are kept on the negated clock.
+        let reversed = match units {
+            Some(("seconds", _)) => tl.clock_of_seconds(1.0) < tl.clock_of_seconds(0.0),
+            Some(("frames", _)) => tl.clock_delta() < 0.0,
+            _ => false,
+        };
         let mut keys = Vec::with_capacity(raw.len());
         for (t, ts, mut key, _, _) in raw {
             key.t = match units {
@@ -440,9 +457,16 @@ impl Evaluator<'_> {
                     ),
                 );
             }
+            if reversed {
+                key.t = -key.t;
+                if let Some(tg) = key.tangent.as_mut() {
+                    tg.iter_mut().for_each(|x| *x = -*x);
+                }
+            }
             keys.push(key);
         }
         let mut k = Keyframes::new(keys, interp, extrapolate);
+        k.reversed = reversed;
         if let Some(rs) = rotation {
             if kind != KeyKind::Vector(3) {
                 return Err(Diagnostic::error(
