@@ -179,7 +179,7 @@ impl Keyframes {
             // All keys at one clock (a timeline whose clock does not move):
             // held, as there is no length to repeat. `max`/`min`, not
             // `clamp`: nothing here may panic.
-            _ if !(len > 0.0) => t.max(t0).min(tn),
+            _ if len.is_nan() || len <= 0.0 => t.max(t0).min(tn),
             Extrapolate::Hold => t.max(t0).min(tn),
             Extrapolate::Loop if t < t0 || t > tn => t0 + (t - t0).rem_euclid(len),
             Extrapolate::PingPong if t < t0 || t > tn => {
