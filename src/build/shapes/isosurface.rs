@@ -117,8 +117,10 @@ impl Isosurface {
             let step = (gt.abs() / slope).max(min_step);
             let tn = (t + step).min(b);
             let gn = self.g(ray.at(tn));
-            if tn > t && gn != f64::MAX && gt != f64::MAX {
-                steepest = steepest.max((gn - gt).abs() / (tn - t));
+            // Only a secant steeper than the bound is worth a division.
+            let rise = (gn - gt).abs();
+            if rise > slope * (tn - t) && gn != f64::MAX && gt != f64::MAX {
+                steepest = steepest.max(rise / (tn - t));
             }
             if (gt < 0.0) != (gn < 0.0) {
                 // Bisect to the accuracy.
@@ -127,8 +129,9 @@ impl Isosurface {
                     steps += 1;
                     let mid = 0.5 * (lo + hi);
                     let gm = self.g(ray.at(mid));
-                    if gm != f64::MAX && glo != f64::MAX && mid > lo {
-                        steepest = steepest.max((gm - glo).abs() / (mid - lo));
+                    let rise = (gm - glo).abs();
+                    if rise > slope * (mid - lo) && gm != f64::MAX && glo != f64::MAX {
+                        steepest = steepest.max(rise / (mid - lo));
                     }
                     if (gm < 0.0) == (glo < 0.0) {
                         lo = mid;

@@ -229,7 +229,7 @@ impl Evaluator<'_> {
             // Another bound: measured on its own.
             it.steepest = Default::default();
             let at = spec.max_gradient_span.unwrap_or(c.span);
-            self.check_gradient(&iso.clone(), at);
+            self.check_gradient(iso, at);
         }
         Ok(())
     }
