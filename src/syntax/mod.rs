@@ -47,23 +47,32 @@ pub fn parse_at(text: &str, file: FileId, base: usize) -> (ast::File, Vec<Diagno
     let marked;
     // Macro bodies read token by token at their calls are blanked (spaces,
     // newlines kept): the grammar sees an empty body.
-    let text = if marks.data_bodies.is_empty() && marks.token_level.is_empty() {
-        text
-    } else {
-        let mut bytes = text.as_bytes().to_vec();
-        for &at in &marks.data_bodies {
-            bytes[at] = prepass::DATA_BODY;
-        }
-        for &(start, end) in &marks.token_level {
-            for b in &mut bytes[start..end] {
-                if *b != b'\n' {
-                    *b = b' ';
+    // Comments, byte-order marks and stray `#`s are spaces in that copy.
+    let text =
+        if marks.data_bodies.is_empty() && marks.token_level.is_empty() && marks.blank.is_empty() {
+            text
+        } else {
+            let mut bytes = text.as_bytes().to_vec();
+            for &(start, end) in &marks.blank {
+                for b in &mut bytes[start..end] {
+                    if *b != b'\n' {
+                        *b = b' ';
+                    }
                 }
             }
-        }
-        marked = String::from_utf8(bytes).unwrap_or_else(|_| text.to_string());
-        marked.as_str()
-    };
+            for &at in &marks.data_bodies {
+                bytes[at] = prepass::DATA_BODY;
+            }
+            for &(start, end) in &marks.token_level {
+                for b in &mut bytes[start..end] {
+                    if *b != b'\n' {
+                        *b = b' ';
+                    }
+                }
+            }
+            marked = String::from_utf8(bytes).unwrap_or_else(|_| text.to_string());
+            marked.as_str()
+        };
     let mut lower = lower::Lowerer {
         file,
         offset: base,
@@ -286,6 +295,11 @@ fn syntax_error(text: &str, file: FileId, at: usize, e: &pest::error::Error<Rule
         return d;
     }
     let (found, len) = token_at(text, at);
+    if expected.is_empty() {
+        if let Some(d) = closer_without_opener(text, at, file) {
+            return d;
+        }
+    }
     let list = match expected.as_slice() {
         [] => "something else".to_string(),
         [one] => one.to_string(),
@@ -318,6 +332,40 @@ fn syntax_error(text: &str, file: FileId, at: usize, e: &pest::error::Error<Rule
     d
 }
 
+/// `#end` (or `#else`, `#case`, …) where a statement was expected: it closes a
+/// directive whose start did not parse (item-by-item reading after a syntax
+/// error starts again past it), since the prepass has checked that directives
+/// balance.
+fn closer_without_opener(text: &str, at: usize, file: FileId) -> Option<Diagnostic> {
+    let (hash, at) = match text[..at].trim_end().strip_suffix('#') {
+        Some(before) => (before.len(), at),
+        None if text[at..].starts_with('#') => {
+            let rest = &text[at + 1..];
+            (at, at + 1 + rest.len() - rest.trim_start().len())
+        }
+        None => return None,
+    };
+    let word: String = text[at..]
+        .chars()
+        .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+        .collect();
+    if !matches!(
+        word.as_str(),
+        "end" | "else" | "elseif" | "case" | "range" | "break"
+    ) {
+        return None;
+    }
+    Some(
+        Diagnostic::error(
+            codes::STRAY_DIRECTIVE,
+            Span::new(file, hash, at + word.len()),
+            format!("`#{word}` of a directive whose start did not parse"),
+        )
+        .with_label("what it belongs to was skipped")
+        .with_help("fix the syntax error above: the directive this closes starts there"),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -345,6 +393,28 @@ mod tests {
             panic!("a block")
         };
         assert_eq!(b.items.len(), 4, "{:#?}", b.items);
+    }
+
+    /// Comments, byte-order marks and stray `#`s are blanked before the grammar
+    /// runs: they separate tokens anywhere whitespace does, and a string keeps
+    /// the comment-like text it holds.
+    #[test]
+    fn comments_separate_tokens_and_strings_keep_theirs() {
+        let f = ok("#declare S = \"a // b /* c */ \u{FEFF}\";");
+        assert!(
+            format!("{f:?}").contains(r#"Str("a // b /* c */ \u{feff}")"#),
+            "{f:?}"
+        );
+        let plain = ok("#declare A = <1, 2, 3>; sphere { A, 1 }");
+        let commented = ok(concat!(
+            "\u{FEFF}/* a */# declare/**/A/**/=<1,//\n2,/* b /* nested */ */3>;\n",
+            "sphere/* c */{ A\u{FEFF}, 1 // d\n}"
+        ));
+        assert_eq!(plain.items.len(), commented.items.len());
+        let (f, d) = parse("sphere { 0, 1 # }", FileId(0));
+        assert_eq!(f.items.len(), 1);
+        assert_eq!(d.len(), 1, "{d:#?}");
+        assert_eq!(d[0].code, codes::UNKNOWN_DIRECTIVE);
     }
 
     /// What the word tables and guards of the grammar must keep reading the

@@ -45,6 +45,8 @@ struct Scanner<'a> {
     /// Macro bodies whose brackets balance only once their `#if` choices are
     /// made (see [`Marks::token_level`]).
     token_level: Vec<(usize, usize)>,
+    /// Comments, byte-order marks and stray `#`s (see [`Marks::blank`]).
+    blank: Vec<(usize, usize)>,
 }
 
 /// What [`check_marking`] finds besides the problems.
@@ -60,11 +62,19 @@ pub struct Marks {
     /// sees such a body as empty; it is parsed at each call, after the `#if`s
     /// it can decide on entry are decided (see the evaluator's `token_level.rs`).
     pub token_level: Vec<(usize, usize)>,
+    /// The ranges that separate tokens but are not whitespace: comments,
+    /// byte-order marks and `#`s that no directive name follows. The parser's
+    /// copy of the text has them as spaces (line breaks kept), so the grammar
+    /// knows only whitespace.
+    pub blank: Vec<(usize, usize)>,
 }
 
 /// The marker the parser's copy of the text has in place of the `{` of a block
 /// body that holds only plain numbers and vectors (see [`check_marking`]).
 pub const DATA_BODY: u8 = 0x01;
+
+/// A byte-order mark (U+FEFF) in UTF-8: POV-Ray reads it as a space.
+const BOM: &[u8] = "\u{FEFF}".as_bytes();
 
 /// Checks `text`; returns the problems found (empty when the file may be parsed).
 pub fn check(text: &str, file: FileId) -> Vec<Diagnostic> {
@@ -91,6 +101,7 @@ pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Marks) {
         misindented: None,
         open_macro: None,
         token_level: Vec::new(),
+        blank: Vec::new(),
     };
     s.run();
     (
@@ -98,6 +109,7 @@ pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Marks) {
         Marks {
             data_bodies: s.data_bodies,
             token_level: s.token_level,
+            blank: s.blank,
         },
     )
 }
@@ -221,18 +233,26 @@ impl Scanner<'_> {
                     return;
                 }
                 b'/' if b.get(i + 1) == Some(&b'/') => {
+                    let start = i;
                     while i < b.len() && b[i] != b'\n' {
                         i += 1;
                     }
+                    self.blank.push((start, i));
                     continue;
                 }
                 b'/' if b.get(i + 1) == Some(&b'*') => match self.comment(i) {
                     Some(end) => {
+                        self.blank.push((i, end));
                         i = end;
                         continue;
                     }
                     None => return,
                 },
+                0xEF if b[i..].starts_with(BOM) => {
+                    self.blank.push((i, i + BOM.len()));
+                    i += BOM.len();
+                    continue;
+                }
                 b'"' => {
                     i = self.string(i);
                     self.prev = b'"';
@@ -582,7 +602,8 @@ impl Scanner<'_> {
         } else if word.is_empty() {
             // POV-Ray ignores a `#` that no directive name follows (its sample
             // language/image_size.pov has one before a `}`); so does the
-            // grammar, with this warning.
+            // grammar (which sees a space there), with this warning.
+            self.blank.push((hash, hash + 1));
             self.diags.push(
                 Diagnostic::warning(
                     codes::UNKNOWN_DIRECTIVE,
