@@ -261,11 +261,12 @@ fn syntax_error(text: &str, file: FileId, at: usize, e: &pest::error::Error<Rule
             }
         }
         for stack in attempts.call_stacks() {
-            if let Some(name) = names::human(stack.deepest.get_rule().copied().unwrap_or(Rule::EOI))
-            {
-                if stack.deepest.get_rule().is_some() {
-                    expected.push(name);
-                }
+            // A block as the deepest rule of a stack is the block being read
+            // (pest folds stacks of many tries into their parent), never one
+            // expected where the error is: that would show as its keyword.
+            let deepest = stack.deepest.get_rule().copied();
+            if let Some(name) = deepest.filter(|r| *r != Rule::block).and_then(names::human) {
+                expected.push(name);
             }
         }
     }
