@@ -3,7 +3,9 @@
 //! (the limit is process-wide, so this file holds one test). A rule that reads
 //! ahead to the end of the input from each of many places (quadratic work, as
 //! the comparison-or-vector lookahead once did on a run of unclosed `<`: 21 s
-//! for 68 KB) exceeds it and the parse reports an error instead of a tree.
+//! for 68 KB), or one that reads the same failing text again at each level of
+//! nesting (exponential work: 6 s for 216 bytes of `s !e +<0.4, `), exceeds it
+//! and the parse reports an error instead of a tree.
 
 use std::num::NonZeroUsize;
 use std::path::Path;
@@ -57,6 +59,12 @@ fn check_all() {
         (
             "vectors in comparisons",
             "#declare A = 1".to_string() + &" < <1,".repeat(1000),
+        ),
+        (
+            // Each `+<` once read the vector after it twice (as the operand of
+            // `+`, then as a new component signed `+`): 2^18 times here.
+            "signs before nested unclosed vectors",
+            "#declare A = ".to_string() + &"s !e +<0.4, ".repeat(18) + "1;",
         ),
         (
             "unclosed parentheses",
