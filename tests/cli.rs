@@ -629,3 +629,62 @@ fn max_gradient_is_warned_about_by_check_and_after_a_render() {
     let high = write("iso_high.rts", &scene(12.0));
     assert_eq!(render(&high), Vec::<String>::new());
 }
+
+/// `rts render` reads the long bodies of `#if`/`#switch` branches only when
+/// it takes them, as POV-Ray skips the branches it does not take: a syntax
+/// error in a branch not taken stops `rts check` (which reads every branch)
+/// but not a render; a branch taken in a loop is read once and placed each
+/// time; the picture is the one a full reading gives.
+#[test]
+fn render_reads_only_the_branches_it_takes() {
+    let pad = "// padding that makes the branch long enough to be left unread\n".repeat(6);
+    let scene = format!(
+        "#version 3.7;\nglobal_settings {{ assumed_gamma 1 }}\n\
+         camera {{ location <0, 2, -8> look_at 0 }}\n\
+         light_source {{ <2, 5, -5> rgb 1 }}\n\
+         #declare Broken = 0;\n\
+         #if (Broken)\n{pad}  sphere {{ <0, 0, 0> 1 * }}\n#else\n{pad}  #declare R = 0.3;\n#end\n\
+         #for (I, 0, 5)\n\
+           #switch (mod(I, 2))\n\
+             #case (0)\n{pad}    sphere {{ <I - 2.5, 0, 0>, R pigment {{ rgb <1, 0, 0> }} }}\n\
+             #break\n\
+             #else\n{pad}    box {{ <I - 2.8, -0.3, -0.3>, <I - 2.2, 0.3, 0.3> pigment {{ rgb 1 }} }}\n\
+           #end\n\
+         #end\n"
+    );
+    let p = write("deferred_branches.rts", &scene);
+    let (code, _, err) = rts(&["check", &p]);
+    assert_eq!(code, 1, "check reads the branch not taken: {err}");
+    assert!(err.contains("rts::syntax::expected"), "{err}");
+    let out = tmp("deferred_branches.png");
+    let stats = tmp("deferred_branches.json");
+    let (code, _, err) = rts(&[
+        "render",
+        &p,
+        "-o",
+        &out,
+        "-W",
+        "32",
+        "-H",
+        "24",
+        "--stats-json",
+        &stats,
+    ]);
+    assert_eq!(code, 0, "the render skips it: {err}");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
+    assert_eq!(json["objects"], 6, "{json}");
+    // The same scene without the broken sphere, read whole (no branch is
+    // long enough to be left unread once the padding goes): the same picture.
+    let whole = scene
+        .replace(&pad, "")
+        .replace("sphere { <0, 0, 0> 1 * }", "");
+    let whole = write("deferred_whole.rts", &whole);
+    let out_whole = tmp("deferred_whole.png");
+    let (code, _, err) = rts(&["render", &whole, "-o", &out_whole, "-W", "32", "-H", "24"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        std::fs::read(&out).unwrap(),
+        std::fs::read(&out_whole).unwrap()
+    );
+}

@@ -84,8 +84,9 @@ pub struct Parsed {
 }
 
 /// Reads and parses `path`, a regular file of at most `max_size` bytes. `Err` when
-/// the file cannot be read at all.
-pub fn parse(path: &Path, max_size: u64) -> Result<Parsed, String> {
+/// the file cannot be read at all. For a render (`defer`), long branch bodies
+/// are read when taken ([`rts::syntax::parse_deferring`]).
+pub fn parse(path: &Path, max_size: u64, defer: bool) -> Result<Parsed, String> {
     let mut sources = SourceMap::new();
     let name = path.display().to_string();
     let id = match eval::load_file_limited(&mut sources, path, name, max_size) {
@@ -119,7 +120,11 @@ pub fn parse(path: &Path, max_size: u64) -> Result<Parsed, String> {
         }
     };
     let text = sources.get(id).text.clone();
-    let (file, diagnostics) = rts::syntax::parse(&text, id);
+    let (file, diagnostics) = if defer {
+        rts::syntax::parse_deferring(&text, id, 0)
+    } else {
+        rts::syntax::parse(&text, id)
+    };
     // After syntax errors the items that parsed are still evaluated (for their
     // own errors), unless nothing could be parsed (the prepass stopped it).
     let evaluable = !rts::diag::has_errors(&diagnostics) || !file.unparsed.is_empty();
@@ -178,7 +183,7 @@ impl Parsed {
 
 /// Reads, parses and evaluates `path`. `Err` when the file cannot be read at all.
 pub fn load(path: &Path, options: &EvalOptions) -> Result<Loaded, String> {
-    let mut parsed = parse(path, options.max_source_size)?;
+    let mut parsed = parse(path, options.max_source_size, options.defer_branches)?;
     let (scene, diags) = parsed.eval(options);
     let mut diagnostics = std::mem::take(&mut parsed.diagnostics);
     diagnostics.extend(diags);

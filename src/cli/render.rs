@@ -395,6 +395,8 @@ pub fn run(args: &RenderArgs) -> i32 {
             reuse: !args.no_eval_cache,
             // The render measures isosurfaces' slopes as it goes.
             sample_gradients: false,
+            // and reads the branches it takes only.
+            defer_branches: true,
             ..o
         },
         Err(e) => return usage(e),
@@ -404,7 +406,7 @@ pub fn run(args: &RenderArgs) -> i32 {
         Err(e) => return usage(e),
     };
     let t0 = Instant::now();
-    let mut parsed = match common::parse(&args.scene_file, args.scene.max_source_size) {
+    let mut parsed = match common::parse(&args.scene_file, args.scene.max_source_size, true) {
         Ok(p) => p,
         Err(e) => {
             eprintln!("error: {e}");

@@ -135,6 +135,11 @@ pub struct EvalOptions {
     /// editor: no render follows). A render leaves it off and warns from the
     /// slopes its rays met instead, as POV-Ray does ([`Evaluated::slope_checks`]).
     pub sample_gradients: bool,
+    /// Whether included files are parsed for rendering: the long branch
+    /// bodies of `#if`/`#switch` read only when taken
+    /// ([`crate::syntax::parse_deferring`]). Off for `rts check` and the
+    /// editor, which report errors in every branch.
+    pub defer_branches: bool,
 }
 
 impl Default for EvalOptions {
@@ -170,6 +175,7 @@ impl Default for EvalOptions {
             max_source_size: MAX_SOURCE_SIZE,
             reuse: true,
             sample_gradients: true,
+            defer_branches: false,
         }
     }
 }

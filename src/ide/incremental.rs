@@ -160,6 +160,16 @@ impl Shift {
                 span: self.span(d.span),
                 ..(**d).clone()
             })),
+            Item::Deferred(d) => {
+                let items = std::cell::OnceCell::new();
+                if let Some(read) = d.items.get() {
+                    let _ = items.set(self.items(read).into());
+                }
+                Item::Deferred(Rc::new(crate::syntax::ast::Deferred {
+                    span: self.span(d.span),
+                    items,
+                }))
+            }
         }
     }
 

@@ -289,6 +289,13 @@ impl Builder<'_> {
             Item::Block(b) => self.block(b, scope, file),
             Item::Bracket(b) => self.items(&b.items, scope, file),
             Item::Expr(e) => self.expr(e),
+            // The editor parses every branch; a body read for a render is walked
+            // once read.
+            Item::Deferred(d) => {
+                if let Some(read) = d.items.get() {
+                    self.items(read, scope, file);
+                }
+            }
             Item::Keyword(_) | Item::Comma(_) | Item::Semicolon(_) | Item::Data(_) => {}
         }
     }

@@ -40,6 +40,19 @@ pub enum Item {
     /// A run of plain numbers and vectors, packed: `3, <0, 0, 0>, <1, 0, 0>`
     /// (the items `3`, `,`, `<0, 0, 0>`, … read in one go).
     Data(std::rc::Rc<super::data::DataRun>),
+    /// The body of a branch (`#if (C) BODY #else BODY #end`, `#case (V) BODY
+    /// #break`) left unread by a parse for rendering, read when the branch is
+    /// taken (see [`crate::syntax::parse_deferring`]).
+    Deferred(std::rc::Rc<Deferred>),
+}
+
+/// A branch body left unread: `#if (Frame = 4) … #end` written as text.
+#[derive(Debug)]
+pub struct Deferred {
+    /// The body's text (from after the branch's head to the `#` that ends it).
+    pub span: Span,
+    /// Its items, once read.
+    pub items: std::cell::OnceCell<std::rc::Rc<[Item]>>,
 }
 
 impl Item {
@@ -53,6 +66,7 @@ impl Item {
             Item::Comma(s) | Item::Semicolon(s) => *s,
             Item::Expr(e) => e.span,
             Item::Data(d) => d.span,
+            Item::Deferred(d) => d.span,
         }
     }
 }

@@ -23,6 +23,9 @@ pub struct Lowerer {
     /// Macro bodies the grammar saw blank, by offsets in the file (see
     /// [`super::prepass::Marks::token_level`]).
     pub token_level: Vec<(usize, usize)>,
+    /// Branch bodies left unread, by offsets in the file, in order (see
+    /// [`super::prepass::Marks::deferred`]).
+    pub deferred: Vec<(usize, usize)>,
 }
 
 type P<'i> = Pair<'i, Rule>;
@@ -160,6 +163,18 @@ impl Lowerer {
 
     fn body(&mut self, p: P) -> Vec<Item> {
         debug_assert_eq!(p.as_rule(), Rule::body);
+        // A deferred body is blank: the grammar skipped it whole and the
+        // (empty) body starts at the `#` that ends it.
+        if !self.deferred.is_empty() && p.as_str().is_empty() {
+            let at = p.as_span().start() + self.offset;
+            if let Ok(k) = self.deferred.binary_search_by_key(&at, |&(_, end)| end) {
+                let (start, end) = self.deferred[k];
+                return vec![Item::Deferred(Rc::new(Deferred {
+                    span: Span::new(self.file, start, end),
+                    items: std::cell::OnceCell::new(),
+                }))];
+            }
+        }
         self.items(p.into_inner())
     }
 

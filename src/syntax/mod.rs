@@ -33,7 +33,24 @@ pub fn parse(text: &str, file: FileId) -> (ast::File, Vec<Diagnostic>) {
 /// [`parse`] for `text` found at byte `base` of file `file` (a part of a larger
 /// file): every span of the tree and the diagnostics is the file's.
 pub fn parse_at(text: &str, file: FileId, base: usize) -> (ast::File, Vec<Diagnostic>) {
-    let (mut diags, marks) = prepass::check_marking(text, file);
+    parse_with(text, file, base, false)
+}
+
+/// [`parse_at`] for rendering: the long branch bodies of `#if`, `#ifdef`,
+/// `#ifndef` and `#switch` are left unread ([`ast::Item::Deferred`]; see
+/// [`prepass::Marks::deferred`]) and parsed when evaluation takes their
+/// branch, as POV-Ray skips the branches it does not take. A syntax error in
+/// a branch not taken goes unreported, as in POV-Ray; `rts check` and the
+/// editor read every branch.
+pub fn parse_deferring(text: &str, file: FileId, base: usize) -> (ast::File, Vec<Diagnostic>) {
+    parse_with(text, file, base, true)
+}
+
+fn parse_with(text: &str, file: FileId, base: usize, defer: bool) -> (ast::File, Vec<Diagnostic>) {
+    let (mut diags, mut marks) = prepass::check_marking(text, file);
+    if !defer {
+        marks.deferred.clear();
+    }
     for d in &mut diags {
         d.shift(base);
     }
@@ -48,31 +65,35 @@ pub fn parse_at(text: &str, file: FileId, base: usize) -> (ast::File, Vec<Diagno
     // Macro bodies read token by token at their calls are blanked (spaces,
     // newlines kept): the grammar sees an empty body.
     // Comments, byte-order marks and stray `#`s are spaces in that copy.
-    let text =
-        if marks.data_bodies.is_empty() && marks.token_level.is_empty() && marks.blank.is_empty() {
-            text
-        } else {
-            let mut bytes = text.as_bytes().to_vec();
-            for &(start, end) in &marks.blank {
-                for b in &mut bytes[start..end] {
-                    if *b != b'\n' {
-                        *b = b' ';
-                    }
+    // Deferred branch bodies are blanked last (over any marks inside them).
+    let text = if marks.data_bodies.is_empty()
+        && marks.token_level.is_empty()
+        && marks.blank.is_empty()
+        && marks.deferred.is_empty()
+    {
+        text
+    } else {
+        let mut bytes = text.as_bytes().to_vec();
+        for &(start, end) in &marks.blank {
+            for b in &mut bytes[start..end] {
+                if *b != b'\n' {
+                    *b = b' ';
                 }
             }
-            for &at in &marks.data_bodies {
-                bytes[at] = prepass::DATA_BODY;
-            }
-            for &(start, end) in &marks.token_level {
-                for b in &mut bytes[start..end] {
-                    if *b != b'\n' {
-                        *b = b' ';
-                    }
+        }
+        for &at in &marks.data_bodies {
+            bytes[at] = prepass::DATA_BODY;
+        }
+        for &(start, end) in marks.token_level.iter().chain(&marks.deferred) {
+            for b in &mut bytes[start..end] {
+                if *b != b'\n' {
+                    *b = b' ';
                 }
             }
-            marked = String::from_utf8(bytes).unwrap_or_else(|_| text.to_string());
-            marked.as_str()
-        };
+        }
+        marked = String::from_utf8(bytes).unwrap_or_else(|_| text.to_string());
+        marked.as_str()
+    };
     let mut lower = lower::Lowerer {
         file,
         offset: base,
@@ -80,6 +101,11 @@ pub fn parse_at(text: &str, file: FileId, base: usize) -> (ast::File, Vec<Diagno
         diags,
         token_level: marks
             .token_level
+            .iter()
+            .map(|&(s, e)| (s + base, e + base))
+            .collect(),
+        deferred: marks
+            .deferred
             .iter()
             .map(|&(s, e)| (s + base, e + base))
             .collect(),
@@ -394,6 +420,38 @@ mod tests {
             panic!("a block")
         };
         assert_eq!(b.items.len(), 4, "{:#?}", b.items);
+    }
+
+    /// A parse for rendering leaves long branch bodies unread, spans kept;
+    /// the parse for checking reads them.
+    #[test]
+    fn long_branch_bodies_are_deferred_for_rendering_only() {
+        let long = "sphere { 0, 1 } ".repeat(20);
+        let text = format!("#if (A)\n{long}\n#else\n{long}#end");
+        let branches = |f: &ast::File| match &f.items[..] {
+            [ast::Item::Directive(d)] => match &d.kind {
+                ast::DirectiveKind::If {
+                    branches,
+                    otherwise,
+                } => (branches[0].1.clone(), otherwise.clone().unwrap()),
+                k => panic!("{k:?}"),
+            },
+            i => panic!("{i:?}"),
+        };
+        let (then, otherwise) = branches(&ok(&text));
+        assert_eq!((then.len(), otherwise.len()), (20, 20));
+        let (f, d) = parse_deferring(&text, FileId(0), 0);
+        assert!(d.is_empty(), "{d:#?}");
+        let (then, otherwise) = branches(&f);
+        for body in [then, otherwise] {
+            let [ast::Item::Deferred(b)] = &body[..] else {
+                panic!("{body:?}")
+            };
+            assert_eq!(
+                &text[b.span.start as usize..b.span.end as usize].trim(),
+                &long.trim()
+            );
+        }
     }
 
     /// Comments, byte-order marks and stray `#`s are blanked before the grammar

@@ -47,7 +47,30 @@ struct Scanner<'a> {
     token_level: Vec<(usize, usize)>,
     /// Comments, byte-order marks and stray `#`s (see [`Marks::blank`]).
     blank: Vec<(usize, usize)>,
+    /// The branch bodies of the `#if`s and `#switch` clauses open here,
+    /// innermost last (see [`Marks::deferred`]).
+    open_bodies: Vec<OpenBody>,
+    /// The bodies that may be left unread (see [`Marks::deferred`]).
+    deferred: Vec<(usize, usize)>,
 }
+
+/// A branch body being scanned: of an `#if`, `#ifdef`, `#ifndef`, `#elseif`,
+/// `#else`, `#case` or `#range`.
+struct OpenBody {
+    /// The directive nesting (`directives.len()`) of the group it belongs to.
+    group: usize,
+    /// Where the body starts, once its head (`(condition)`) is read.
+    start: Option<usize>,
+    /// Brackets open before the head's `(` (the head ends where they are
+    /// back to this), then brackets open at the body's start.
+    brackets: usize,
+    /// False once the body closed a bracket opened before it.
+    balanced: bool,
+}
+
+/// Bodies shorter than this are parsed with the rest (deferring costs a
+/// second parse setup when the branch is taken).
+const DEFER_MIN: usize = 256;
 
 /// What [`check_marking`] finds besides the problems.
 #[derive(Debug, Default)]
@@ -67,6 +90,13 @@ pub struct Marks {
     /// copy of the text has them as spaces (line breaks kept), so the grammar
     /// knows only whitespace.
     pub blank: Vec<(usize, usize)>,
+    /// The branch bodies (`#if (C)` … up to the `#` of the `#elseif`, `#else`,
+    /// `#end`, `#case`, `#range` or `#break` that ends them; `#else` … and
+    /// `#switch` clauses alike) of at least [`DEFER_MIN`] bytes whose brackets
+    /// balance, outermost only. A parse for rendering leaves them unread, as
+    /// POV-Ray skips the branches it does not take, and reads one when its
+    /// branch is taken (see [`super::parse_deferring`]).
+    pub deferred: Vec<(usize, usize)>,
 }
 
 /// The marker the parser's copy of the text has in place of the `{` of a block
@@ -102,6 +132,8 @@ pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Marks) {
         open_macro: None,
         token_level: Vec::new(),
         blank: Vec::new(),
+        open_bodies: Vec::new(),
+        deferred: Vec::new(),
     };
     s.run();
     (
@@ -110,6 +142,7 @@ pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Marks) {
             data_bodies: s.data_bodies,
             token_level: s.token_level,
             blank: s.blank,
+            deferred: s.deferred,
         },
     )
 }
@@ -479,6 +512,9 @@ impl Scanner<'_> {
                         self.misindented = Some((at, i));
                     }
                 }
+                if !self.open_bodies.is_empty() {
+                    self.body_bracket_closed(c, i);
+                }
                 if open == b'{' && self.plain_open == Some(at) {
                     let body = std::str::from_utf8(&self.bytes[at + 1..i]).unwrap_or("");
                     if super::data::is_plain_body(body) {
@@ -539,6 +575,9 @@ impl Scanner<'_> {
         let span = self.span(hash, i);
         if let Some(name) = OPENING_DIRECTIVES.iter().find(|d| **d == word) {
             self.directives.push((name, hash, i));
+            if matches!(*name, "if" | "ifdef" | "ifndef") {
+                self.open_body(None);
+            }
             if *name == "macro" && self.open_macro.is_none() {
                 self.open_macro = Some((hash, self.directives.len() - 1, self.brackets.len()));
             }
@@ -559,10 +598,13 @@ impl Scanner<'_> {
                             .map_or(hash, |p| macro_hash + p + 1);
                         self.brackets.truncate(depth);
                         self.data_bodies.retain(|&at| at < macro_hash);
+                        self.deferred.retain(|&(at, _)| at < macro_hash);
+                        self.open_bodies.retain(|b| b.group < slot + 1);
                         self.token_level.push((body, hash));
                     }
                 }
             }
+            self.end_body(hash);
             if self.directives.pop().is_none() {
                 self.diags.push(
                     Diagnostic::error(codes::STRAY_DIRECTIVE, span, "`#end` with nothing to close")
@@ -598,6 +640,12 @@ impl Scanner<'_> {
                     .with_help(format!("`#{word}` may only stand inside {needs} … #end")),
                 );
                 return false;
+            }
+            self.end_body(hash);
+            match word {
+                "else" => self.open_body(Some(i)),
+                "break" => {}
+                _ => self.open_body(None),
             }
         } else if word.is_empty() {
             // POV-Ray ignores a `#` that no directive name follows (its sample
@@ -637,6 +685,59 @@ impl Scanner<'_> {
         }
         self.prev = b'{';
         true
+    }
+
+    /// A branch body of the innermost directive begins: at `start`, or after
+    /// the parenthesised head that follows.
+    fn open_body(&mut self, start: Option<usize>) {
+        self.open_bodies.push(OpenBody {
+            group: self.directives.len(),
+            start,
+            brackets: self.brackets.len(),
+            balanced: true,
+        });
+    }
+
+    /// A bracket closed at `i` (`c`): it may end the innermost body's head,
+    /// or close, inside a body, a bracket opened before that body.
+    fn body_bracket_closed(&mut self, c: u8, i: usize) {
+        let open = self.brackets.len();
+        if let Some(b) = self.open_bodies.last_mut() {
+            if b.start.is_none() && c == b')' && open == b.brackets {
+                b.start = Some(i + 1);
+                return;
+            }
+        }
+        for b in self.open_bodies.iter_mut().rev() {
+            if b.start.is_none() {
+                continue;
+            }
+            if b.brackets <= open {
+                break;
+            }
+            b.balanced = false;
+        }
+    }
+
+    /// The body of the innermost directive's branch ends at the `#` at `hash`:
+    /// noted in [`Marks::deferred`] when it may be left unread.
+    fn end_body(&mut self, hash: usize) {
+        if self
+            .open_bodies
+            .last()
+            .is_none_or(|b| b.group != self.directives.len())
+        {
+            return;
+        }
+        let Some(b) = self.open_bodies.pop() else {
+            return;
+        };
+        if let Some(start) = b.start {
+            if b.balanced && b.brackets == self.brackets.len() && hash - start >= DEFER_MIN {
+                self.deferred.retain(|&(at, _)| at < start);
+                self.deferred.push((start, hash));
+            }
+        }
     }
 
     fn finish(&mut self) {
@@ -709,6 +810,42 @@ mod tests {
 
     fn codes(text: &str) -> Vec<&'static str> {
         check(text, FileId(0)).into_iter().map(|d| d.code).collect()
+    }
+
+    /// The bodies a parse for rendering may leave unread: long ones whose
+    /// brackets balance, outermost only, `#switch` clauses and `#else` alike.
+    #[test]
+    fn long_balanced_branch_bodies_are_deferred() {
+        let long = "sphere { 0, 1 } ".repeat(20);
+        let deferred = |text: &str| -> Vec<String> {
+            let (_, marks) = check_marking(text, FileId(0));
+            marks
+                .deferred
+                .iter()
+                .map(|&(s, e)| text[s..e].trim().to_string())
+                .collect()
+        };
+        let text = format!("#if (A) {long} #elseif (B) x #else {long} #end");
+        assert_eq!(deferred(&text), [long.trim(), long.trim()]);
+        // Nested: the outer body only.
+        let inner = format!("#if (C) {long} #end");
+        let text = format!("#if ((A)) {inner} #end");
+        assert_eq!(deferred(&text), [inner.as_str()]);
+        let text =
+            format!("#switch (A) #case (1) {long} #break #range (2, 3) {long} #else {long} #end");
+        assert_eq!(deferred(&text).len(), 3);
+        // Brackets that cross the body's ends, and a body in a macro read
+        // token by token, stay.
+        assert!(deferred(&format!("union {{ #if (A) }} {long} union {{ #end }}")).is_empty());
+        assert!(deferred(&format!("#if (A) {long} {{ #else }} {long} #end")).is_empty());
+        let text = format!("#macro M() #if (A) {long} #write (F, \"{{\") mesh2 {{ #end #end");
+        assert!(deferred(&text).is_empty());
+        assert!(deferred("#if (A) sphere { 0, 1 } #end").is_empty());
+        // The body starts after the head's closing parenthesis.
+        let text = format!("#ifdef (A[(1)]) {long}#end");
+        assert_eq!(deferred(&text), [long.trim()]);
+        let (_, marks) = check_marking(&text, FileId(0));
+        assert_eq!(marks.deferred[0].0, "#ifdef (A[(1)])".len());
     }
 
     #[test]

@@ -405,7 +405,7 @@ impl Evaluator<'_> {
             }
             _ => return Ok(None),
         }
-        Ok(Some(out))
+        Ok(Some(self.read_deferred(out)))
     }
 
     /// The value a conditional directive gives on the right of `#declare`: its

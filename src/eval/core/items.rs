@@ -123,6 +123,10 @@ impl Evaluator<'_> {
             }
             Item::Comma(s) => out.push(Tok::Comma(*s)),
             Item::Semicolon(s) => out.push(Tok::Semi(*s)),
+            Item::Deferred(d) => {
+                let items = self.deferred_items(d);
+                self.expand(&items, out);
+            }
             Item::Data(run) if out.packed => out.push(Tok::Data(run.clone())),
             Item::Data(run) => self.unpack(run, out),
             Item::Expr(e) => {

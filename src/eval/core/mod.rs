@@ -11,6 +11,7 @@ pub(crate) mod budget;
 pub(crate) mod builtins;
 pub(crate) mod context;
 pub(crate) mod cursor;
+pub(crate) mod deferred;
 pub(crate) mod directives;
 pub(crate) mod evaluator;
 pub(crate) mod exprs;
