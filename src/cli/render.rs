@@ -395,8 +395,10 @@ pub fn run(args: &RenderArgs) -> i32 {
             reuse: !args.no_eval_cache,
             // The render measures isosurfaces' slopes as it goes.
             sample_gradients: false,
-            // and reads the branches it takes only.
+            // and reads the branches it takes only; nothing shows the
+            // globals' values.
             defer_branches: true,
+            describe_globals: false,
             ..o
         },
         Err(e) => return usage(e),

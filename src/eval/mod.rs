@@ -140,6 +140,9 @@ pub struct EvalOptions {
     /// ([`crate::syntax::parse_deferring`]). Off for `rts check` and the
     /// editor, which report errors in every branch.
     pub defer_branches: bool,
+    /// Whether [`Evaluated::globals`] is filled (the editor's hover and
+    /// completion show the values); a render leaves it empty.
+    pub describe_globals: bool,
 }
 
 impl Default for EvalOptions {
@@ -176,6 +179,7 @@ impl Default for EvalOptions {
             reuse: true,
             sample_gradients: true,
             defer_branches: false,
+            describe_globals: true,
         }
     }
 }
@@ -188,7 +192,8 @@ pub struct Evaluated {
     pub scene: Scene,
     /// Errors, warnings and `#debug` notes.
     pub diagnostics: Vec<Diagnostic>,
-    /// The global names defined at the end of evaluation, for editors (hover).
+    /// The global names defined at the end of evaluation, for editors (hover);
+    /// empty unless [`EvalOptions::describe_globals`].
     pub globals: Vec<Declared>,
     /// The isosurfaces whose `max_gradient` the render is to check (without
     /// [`EvalOptions::sample_gradients`]).

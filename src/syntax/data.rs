@@ -113,7 +113,8 @@ pub fn scan(text: &str, mut f: impl FnMut(Piece<'_>)) -> Result<(), BadNumber> {
             continue;
         }
         let start = i;
-        if b[i] == b'<' {
+        // `<`, or the marker the prepass puts in its place.
+        if b[i] == b'<' || b[i] == super::prepass::PLAIN_VECTOR {
             i += 1;
             let mut n = 0;
             loop {
@@ -274,7 +275,7 @@ fn skip_space(b: &[u8], mut i: usize) -> usize {
 }
 
 /// A plain number or vector at `i`: where it ends.
-fn plain_element(b: &[u8], i: usize) -> Option<usize> {
+pub(crate) fn plain_element(b: &[u8], i: usize) -> Option<usize> {
     if b[i] != b'<' {
         return plain_number(b, i);
     }

@@ -70,6 +70,7 @@ fn parse_with(text: &str, file: FileId, base: usize, defer: bool) -> (ast::File,
         && marks.token_level.is_empty()
         && marks.blank.is_empty()
         && marks.deferred.is_empty()
+        && marks.plain_vectors.is_empty()
     {
         text
     } else {
@@ -83,6 +84,9 @@ fn parse_with(text: &str, file: FileId, base: usize, defer: bool) -> (ast::File,
         }
         for &at in &marks.data_bodies {
             bytes[at] = prepass::DATA_BODY;
+        }
+        for &at in &marks.plain_vectors {
+            bytes[at] = prepass::PLAIN_VECTOR;
         }
         for &(start, end) in marks.token_level.iter().chain(&marks.deferred) {
             for b in &mut bytes[start..end] {
@@ -547,6 +551,9 @@ mod tests {
         let general = components("#declare V = < 1, -2.5 ,+ 3e1, A>;");
         let cut = plain.rfind("Unary").expect("a signed component");
         assert_eq!(plain[..cut], general[..cut]);
+        // Marked by the prepass (above) or not (a comment inside): the same.
+        let unmarked = components("#declare V = < 1, -2.5 ,+ 3e1/* c */>;");
+        assert_eq!(plain[..cut], unmarked[..cut]);
         let (_, d) = parse("#declare V = <1e999, 0>;", FileId(0));
         assert_eq!(d.len(), 1, "{d:#?}");
         assert_eq!(d[0].code, codes::BAD_NUMBER);

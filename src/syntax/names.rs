@@ -8,7 +8,11 @@ use super::parser::Rule;
 pub fn human(rule: Rule) -> Option<&'static str> {
     Some(match rule {
         Rule::EOI => "end of file",
-        Rule::WHITESPACE | Rule::item_end | Rule::end_word | Rule::op_char => return None,
+        Rule::WHITESPACE
+        | Rule::item_end
+        | Rule::end_word
+        | Rule::op_char
+        | Rule::marked_vector => return None,
         Rule::file | Rule::one_item | Rule::only_trivia | Rule::item | Rule::body => "a statement",
         Rule::block | Rule::sized_fn => "a block",
         Rule::func_params => "a parameter list",

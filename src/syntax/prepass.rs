@@ -47,6 +47,8 @@ struct Scanner<'a> {
     token_level: Vec<(usize, usize)>,
     /// Comments, byte-order marks and stray `#`s (see [`Marks::blank`]).
     blank: Vec<(usize, usize)>,
+    /// The `<` of every plain vector (see [`Marks::plain_vectors`]).
+    plain_vectors: Vec<usize>,
     /// The branch bodies of the `#if`s and `#switch` clauses open here,
     /// innermost last (see [`Marks::deferred`]).
     open_bodies: Vec<OpenBody>,
@@ -97,11 +99,20 @@ pub struct Marks {
     /// POV-Ray skips the branches it does not take, and reads one when its
     /// branch is taken (see [`super::parse_deferring`]).
     pub deferred: Vec<(usize, usize)>,
+    /// The offsets of the `<` of every vector of 2 to 5 plain numbers with
+    /// commas (`<1, -2.5, 3e-2>`, the shape of the grammar's `data_vector`):
+    /// the parser's copy has [`PLAIN_VECTOR`] there and the grammar skips to
+    /// its `>` at memory speed; the lowering reads the numbers.
+    pub plain_vectors: Vec<usize>,
 }
 
 /// The marker the parser's copy of the text has in place of the `{` of a block
 /// body that holds only plain numbers and vectors (see [`check_marking`]).
 pub const DATA_BODY: u8 = 0x01;
+
+/// The marker the parser's copy of the text has in place of the `<` of a
+/// vector of plain numbers (see [`Marks::plain_vectors`]).
+pub const PLAIN_VECTOR: u8 = 0x02;
 
 /// A byte-order mark (U+FEFF) in UTF-8: POV-Ray reads it as a space.
 const BOM: &[u8] = "\u{FEFF}".as_bytes();
@@ -132,6 +143,7 @@ pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Marks) {
         open_macro: None,
         token_level: Vec::new(),
         blank: Vec::new(),
+        plain_vectors: Vec::new(),
         open_bodies: Vec::new(),
         deferred: Vec::new(),
     };
@@ -143,6 +155,7 @@ pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Marks) {
             token_level: s.token_level,
             blank: s.blank,
             deferred: s.deferred,
+            plain_vectors: s.plain_vectors,
         },
     )
 }
@@ -253,12 +266,12 @@ impl Scanner<'_> {
                 self.plain_open = None;
             }
             match c {
-                DATA_BODY => {
+                DATA_BODY | PLAIN_VECTOR => {
                     self.diags.push(
                         Diagnostic::error(
                             codes::SYNTAX_EXPECTED,
                             self.span(i, i + 1),
-                            "a control character (U+0001) in the scene",
+                            format!("a control character (U+{c:04X}) in the scene"),
                         )
                         .with_label("not a character a scene may hold")
                         .with_help("remove it; the file may not be a text file"),
@@ -320,6 +333,13 @@ impl Scanner<'_> {
                     if !self.close(c, i) {
                         return;
                     }
+                }
+                b'<' if super::data::plain_element(b, i).is_some() => {
+                    self.plain_vectors.push(i);
+                    i = super::data::plain_element(b, i).unwrap_or(b.len());
+                    self.prev = b'>';
+                    self.prefix_run = 0;
+                    continue;
                 }
                 b'<' => {
                     if matches!(
@@ -810,6 +830,34 @@ mod tests {
 
     fn codes(text: &str) -> Vec<&'static str> {
         check(text, FileId(0)).into_iter().map(|d| d.code).collect()
+    }
+
+    /// Vectors of 2 to 5 plain numbers are marked for the grammar to skip;
+    /// anything else at a `<` is left to the grammar.
+    #[test]
+    fn plain_vectors_are_marked() {
+        let marked = |text: &str| check_marking(text, FileId(0)).1.plain_vectors;
+        assert_eq!(marked("A <1, -2.5, 3e-2> + < 1 , 2 , >"), [2, 20]);
+        for text in [
+            "<1 2>",
+            "<a, 1>",
+            "<1,2,3,4,5,6>",
+            "<1e, 2>",
+            "<1, /* c */ 2>",
+            "<1>",
+            "<<1, 2>, 3>",
+        ] {
+            assert_eq!(
+                marked(text),
+                if text.starts_with("<<") {
+                    vec![1]
+                } else {
+                    vec![]
+                },
+                "{text}"
+            );
+        }
+        assert_eq!(codes("sphere { \u{2}1, 2> 1 }"), [codes::SYNTAX_EXPECTED]);
     }
 
     /// The bodies a parse for rendering may leave unread: long ones whose

@@ -385,7 +385,11 @@ impl<'a> Evaluator<'a> {
                 );
             }
         }
-        let globals = self.scope.globals();
+        let globals = if self.options.describe_globals {
+            self.scope.globals()
+        } else {
+            Vec::new()
+        };
         Evaluated {
             scene: self.scene,
             diagnostics: self.diags,
