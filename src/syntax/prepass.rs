@@ -539,6 +539,11 @@ impl Scanner<'_> {
                     let body = std::str::from_utf8(&self.bytes[at + 1..i]).unwrap_or("");
                     if super::data::is_plain_body(body) {
                         self.data_bodies.push(at);
+                        // The grammar skips the body whole: its vectors need
+                        // no marks (a mesh's million would cost memory).
+                        while self.plain_vectors.last().is_some_and(|&v| v > at) {
+                            self.plain_vectors.pop();
+                        }
                     }
                 }
                 self.plain_open = None;
