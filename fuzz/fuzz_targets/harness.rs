@@ -85,11 +85,7 @@ pub fn parse_eval(text: &str) -> Option<Evaluated> {
     let mut sources = SourceMap::new();
     let id = sources.add("fuzz.rts", Some(scene_path()), text.to_string());
     let render = text.len() % 2 == 1;
-    let (file, diags) = if render {
-        rts::syntax::parse_deferring(text, id, 0)
-    } else {
-        rts::syntax::parse(text, id)
-    };
+    let (file, diags) = rts::syntax::parse_with(text, id, 0, render);
     if rts::diag::has_errors(&diags) {
         for d in &diags {
             let line = rts::diag::render::short(d, &sources);

@@ -85,7 +85,7 @@ pub struct Parsed {
 
 /// Reads and parses `path`, a regular file of at most `max_size` bytes. `Err` when
 /// the file cannot be read at all. For a render (`defer`), long branch bodies
-/// are read when taken ([`rts::syntax::parse_deferring`]).
+/// are read when taken ([`rts::syntax::parse_with`]).
 pub fn parse(path: &Path, max_size: u64, defer: bool) -> Result<Parsed, String> {
     let mut sources = SourceMap::new();
     let name = path.display().to_string();
@@ -120,11 +120,7 @@ pub fn parse(path: &Path, max_size: u64, defer: bool) -> Result<Parsed, String> 
         }
     };
     let text = sources.get(id).text.clone();
-    let (file, diagnostics) = if defer {
-        rts::syntax::parse_deferring(&text, id, 0)
-    } else {
-        rts::syntax::parse(&text, id)
-    };
+    let (file, diagnostics) = rts::syntax::parse_with(&text, id, 0, defer);
     // After syntax errors the items that parsed are still evaluated (for their
     // own errors), unless nothing could be parsed (the prepass stopped it).
     let evaluable = !rts::diag::has_errors(&diagnostics) || !file.unparsed.is_empty();

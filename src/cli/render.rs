@@ -408,7 +408,11 @@ pub fn run(args: &RenderArgs) -> i32 {
         Err(e) => return usage(e),
     };
     let t0 = Instant::now();
-    let mut parsed = match common::parse(&args.scene_file, args.scene.max_source_size, true) {
+    let mut parsed = match common::parse(
+        &args.scene_file,
+        args.scene.max_source_size,
+        base.defer_branches,
+    ) {
         Ok(p) => p,
         Err(e) => {
             eprintln!("error: {e}");

@@ -137,7 +137,7 @@ pub struct EvalOptions {
     pub sample_gradients: bool,
     /// Whether included files are parsed for rendering: the long branch
     /// bodies of `#if`/`#switch` read only when taken
-    /// ([`crate::syntax::parse_deferring`]). Off for `rts check` and the
+    /// ([`crate::syntax::parse_with`]). Off for `rts check` and the
     /// editor, which report errors in every branch.
     pub defer_branches: bool,
     /// Whether [`Evaluated::globals`] is filled (the editor's hover and

@@ -42,7 +42,7 @@ pub enum Item {
     Data(std::rc::Rc<super::data::DataRun>),
     /// The body of a branch (`#if (C) BODY #else BODY #end`, `#case (V) BODY
     /// #break`) left unread by a parse for rendering, read when the branch is
-    /// taken (see [`crate::syntax::parse_deferring`]).
+    /// taken (see [`crate::syntax::parse_with`]).
     Deferred(std::rc::Rc<Deferred>),
 }
 

@@ -36,19 +36,20 @@ pub fn parse_at(text: &str, file: FileId, base: usize) -> (ast::File, Vec<Diagno
     parse_with(text, file, base, false)
 }
 
-/// [`parse_at`] for rendering: the long branch bodies of `#if`, `#ifdef`,
-/// `#ifndef` and `#switch` are left unread ([`ast::Item::Deferred`]; see
-/// [`prepass::Marks::deferred`]) and parsed when evaluation takes their
-/// branch, as POV-Ray skips the branches it does not take. A syntax error in
-/// a branch not taken goes unreported, as in POV-Ray; `rts check` and the
-/// editor read every branch.
-pub fn parse_deferring(text: &str, file: FileId, base: usize) -> (ast::File, Vec<Diagnostic>) {
-    parse_with(text, file, base, true)
-}
-
-fn parse_with(text: &str, file: FileId, base: usize, defer: bool) -> (ast::File, Vec<Diagnostic>) {
+/// [`parse_at`], and for rendering (`defer_branches`) the long branch bodies
+/// of `#if`, `#ifdef`, `#ifndef` and `#switch` left unread
+/// ([`ast::Item::Deferred`]; see [`prepass::Marks::deferred`]) to be parsed
+/// when evaluation takes their branch, as POV-Ray skips the branches it does
+/// not take. A syntax error in a branch not taken then goes unreported, as in
+/// POV-Ray; `rts check` and the editor read every branch.
+pub fn parse_with(
+    text: &str,
+    file: FileId,
+    base: usize,
+    defer_branches: bool,
+) -> (ast::File, Vec<Diagnostic>) {
     let (mut diags, mut marks) = prepass::check_marking(text, file);
-    if !defer {
+    if !defer_branches {
         marks.deferred.clear();
     }
     for d in &mut diags {
@@ -62,10 +63,11 @@ fn parse_with(text: &str, file: FileId, base: usize, defer: bool) -> (ast::File,
     // grammar skips them whole; the lowering scans them.
     let original = text;
     let marked;
-    // Macro bodies read token by token at their calls are blanked (spaces,
-    // newlines kept): the grammar sees an empty body.
-    // Comments, byte-order marks and stray `#`s are spaces in that copy.
-    // Deferred branch bodies are blanked last (over any marks inside them).
+    // Vectors of plain numbers have their `<` marked the same way. Comments,
+    // byte-order marks and stray `#`s, macro bodies read token by token at
+    // their calls and deferred branch bodies are blanked (spaces, newlines
+    // kept), after the marks (over any inside them): the grammar sees spaces
+    // and empty bodies.
     let text = if marks.data_bodies.is_empty()
         && marks.token_level.is_empty()
         && marks.blank.is_empty()
@@ -75,20 +77,14 @@ fn parse_with(text: &str, file: FileId, base: usize, defer: bool) -> (ast::File,
         text
     } else {
         let mut bytes = text.as_bytes().to_vec();
-        for &(start, end) in &marks.blank {
-            for b in &mut bytes[start..end] {
-                if *b != b'\n' {
-                    *b = b' ';
-                }
-            }
-        }
         for &at in &marks.data_bodies {
             bytes[at] = prepass::DATA_BODY;
         }
         for &at in &marks.plain_vectors {
             bytes[at] = prepass::PLAIN_VECTOR;
         }
-        for &(start, end) in marks.token_level.iter().chain(&marks.deferred) {
+        let blanked = marks.blank.iter().chain(&marks.token_level);
+        for &(start, end) in blanked.chain(&marks.deferred) {
             for b in &mut bytes[start..end] {
                 if *b != b'\n' {
                     *b = b' ';
@@ -444,7 +440,7 @@ mod tests {
         };
         let (then, otherwise) = branches(&ok(&text));
         assert_eq!((then.len(), otherwise.len()), (20, 20));
-        let (f, d) = parse_deferring(&text, FileId(0), 0);
+        let (f, d) = parse_with(&text, FileId(0), 0, true);
         assert!(d.is_empty(), "{d:#?}");
         let (then, otherwise) = branches(&f);
         for body in [then, otherwise] {

@@ -176,11 +176,12 @@ impl Keyframes {
         let (t0, tn) = (ks[0].t, ks[n - 1].t);
         let len = tn - t0;
         let t = match self.extrapolate {
-            // All keys at one clock (a timeline whose clock does not move):
-            // held, as there is no length to repeat. `max`/`min`, not
-            // `clamp`: nothing here may panic.
-            _ if len.is_nan() || len <= 0.0 => t.max(t0).min(tn),
-            Extrapolate::Hold => t.max(t0).min(tn),
+            // Held; so are all keys at one clock (a timeline whose clock does
+            // not move: no length to repeat). `max`/`min`, not `clamp`:
+            // nothing here may panic.
+            _ if self.extrapolate == Extrapolate::Hold || len.is_nan() || len <= 0.0 => {
+                t.max(t0).min(tn)
+            }
             Extrapolate::Loop if t < t0 || t > tn => t0 + (t - t0).rem_euclid(len),
             Extrapolate::PingPong if t < t0 || t > tn => {
                 let x = (t - t0).rem_euclid(2.0 * len);

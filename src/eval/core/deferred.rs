@@ -1,6 +1,6 @@
 //! Branch bodies read when their branch is taken. A parse for rendering
 //! leaves the long bodies of `#if`, `#ifdef`, `#ifndef` and `#switch` unread
-//! ([`crate::syntax::parse_deferring`]), as POV-Ray skips the branches it
+//! ([`crate::syntax::parse_with`]), as POV-Ray skips the branches it
 //! does not take without reading them: a scene that picks one of eighty
 //! objects by `frame_number` reads one. A body is read the first time its
 //! branch is taken and kept in the tree for the next time (a loop, a macro
@@ -25,7 +25,7 @@ impl Evaluator<'_> {
             .text
             .get(start..end)
             .unwrap_or("");
-        let (file, diags) = crate::syntax::parse_deferring(text, d.span.file, start);
+        let (file, diags) = crate::syntax::parse_with(text, d.span.file, start, true);
         let failed = diags.iter().any(Diagnostic::is_error);
         for diag in diags {
             self.report(diag.into());

@@ -233,11 +233,8 @@ impl Evaluator<'_> {
             Some(p) => p.clone(),
             None => {
                 let text = self.sources.get(id).text.clone();
-                let (file, diags) = if self.options.defer_branches {
-                    crate::syntax::parse_deferring(&text, id, 0)
-                } else {
-                    crate::syntax::parse(&text, id)
-                };
+                let (file, diags) =
+                    crate::syntax::parse_with(&text, id, 0, self.options.defer_branches);
                 let ok = !crate::diag::has_errors(&diags);
                 for d in diags {
                     self.report(d.into());
