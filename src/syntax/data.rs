@@ -98,8 +98,26 @@ pub struct BadNumber {
 
 /// Scans the text of a `data_run` (the grammar guarantees its shape), calling
 /// `f` for every element and comma in order.
-pub fn scan(text: &str, mut f: impl FnMut(Piece<'_>)) -> Result<(), BadNumber> {
+pub fn scan(text: &str, f: impl FnMut(Piece<'_>)) -> Result<(), BadNumber> {
+    scan_with(text, true, f)
+}
+
+/// [`scan`] for the places only: each element's `values` is empty (a run
+/// already read has them; finding where elements start and end without
+/// reading their numbers is several times cheaper).
+pub fn scan_places(text: &str, f: impl FnMut(Piece<'_>)) {
+    let _ = scan_with(text, false, f);
+}
+
+fn scan_with(text: &str, read: bool, mut f: impl FnMut(Piece<'_>)) -> Result<(), BadNumber> {
     let b = text.as_bytes();
+    let number = |text: &str, i: usize| {
+        if read {
+            number(text, i)
+        } else {
+            Ok((0.0, skip_number(text.as_bytes(), i)))
+        }
+    };
     let mut i = 0;
     let mut comps = [0.0f64; 5];
     loop {
@@ -138,7 +156,7 @@ pub fn scan(text: &str, mut f: impl FnMut(Piece<'_>)) -> Result<(), BadNumber> {
             f(Piece::Element {
                 start,
                 end: i,
-                values: &comps[..n.min(comps.len())],
+                values: &comps[..if read { n.min(comps.len()) } else { 0 }],
             });
         } else {
             let (v, next) = number(text, i)?;
@@ -147,7 +165,7 @@ pub fn scan(text: &str, mut f: impl FnMut(Piece<'_>)) -> Result<(), BadNumber> {
             f(Piece::Element {
                 start,
                 end: i,
-                values: &comps[..1],
+                values: &comps[..usize::from(read)],
             });
         }
     }
@@ -185,7 +203,7 @@ pub fn vector_components(text: &str) -> Vec<Component> {
         }
         let start = i;
         i = number_end(b, i);
-        let value = text[start..i].parse::<f64>().ok().filter(|v| v.is_finite());
+        let value = super::decimal::parse(&text[start..i]);
         out.push(Component {
             sign,
             start,
@@ -245,25 +263,62 @@ pub fn read(text: &str, span: Span) -> Result<DataRun, BadNumber> {
 /// of 2 to 5 such numbers with commas between (a trailing comma allowed, in a
 /// vector and after the last element). Such a body is read as one packed run.
 pub fn is_plain_body(text: &str) -> bool {
+    plain_body(text, Span::default()).is_some()
+}
+
+/// The packed run of a body [`is_plain_body`] accepts, read in the same pass
+/// that checks it: `None` when the body is not plain, `Some(None)` when it is
+/// but a number does not fit in an `f64` (left to [`read`] to report).
+pub fn plain_body(text: &str, span: Span) -> Option<Option<DataRun>> {
     let b = text.as_bytes();
+    let mut values = Vec::with_capacity(text.len() / 6);
+    let mut dims: Vec<u8> = Vec::new();
+    let mut uniform: Option<u8> = None;
+    let mut fits = true;
+    let mut len = 0;
     let mut i = skip_space(b, 0);
-    let mut elements = 0;
     loop {
         if i >= b.len() {
-            return elements >= 2;
+            break;
         }
-        i = match plain_element(b, i) {
-            Some(next) => next,
-            None => return false,
-        };
-        elements += 1;
+        let before = values.len();
+        i = plain_element_into(b, i, &mut values, &mut fits)?;
+        let n = (values.len() - before) as u8;
+        match uniform {
+            None if dims.is_empty() => uniform = Some(n),
+            Some(u) if u != n => {
+                // The first element of another size: from now on one count each.
+                dims = vec![u; len];
+                dims.push(n);
+                uniform = None;
+            }
+            Some(_) => {}
+            None => dims.push(n),
+        }
+        len += 1;
         i = skip_space(b, i);
         match b.get(i) {
-            None => return elements >= 2,
+            None => break,
             Some(b',') => i = skip_space(b, i + 1),
-            Some(_) => return false,
+            Some(_) => return None,
         }
     }
+    if len < 2 {
+        return None;
+    }
+    if !fits {
+        return Some(None);
+    }
+    values.shrink_to_fit();
+    Some(Some(DataRun {
+        span,
+        values,
+        dims: match uniform {
+            Some(n) => Dims::Uniform(n),
+            None => Dims::Mixed(dims),
+        },
+        len,
+    }))
 }
 
 /// Spaces only (a body with comments is not marked).
@@ -277,12 +332,12 @@ fn skip_space(b: &[u8], mut i: usize) -> usize {
 /// A plain number or vector at `i`: where it ends.
 pub(crate) fn plain_element(b: &[u8], i: usize) -> Option<usize> {
     if b[i] != b'<' {
-        return plain_number(b, i);
+        return plain_number(b, i).map(|(end, _)| end);
     }
     let mut i = skip_space(b, i + 1);
     let mut n = 0;
     loop {
-        i = plain_number(b, i)?;
+        i = plain_number(b, i)?.0;
         n += 1;
         i = skip_space(b, i);
         match b.get(i)? {
@@ -298,45 +353,56 @@ pub(crate) fn plain_element(b: &[u8], i: usize) -> Option<usize> {
     }
 }
 
+/// [`plain_element`], its numbers pushed on `values` (`fits` cleared when
+/// one does not fit in an `f64`).
+fn plain_element_into(b: &[u8], i: usize, values: &mut Vec<f64>, fits: &mut bool) -> Option<usize> {
+    let mut push = |v: Option<f64>| match v {
+        Some(v) => values.push(v),
+        None => {
+            *fits = false;
+            values.push(0.0);
+        }
+    };
+    if b[i] != b'<' {
+        let (end, v) = plain_number(b, i)?;
+        push(v);
+        return Some(end);
+    }
+    let mut i = skip_space(b, i + 1);
+    let mut n = 0;
+    loop {
+        let (end, v) = plain_number(b, i)?;
+        push(v);
+        i = skip_space(b, end);
+        n += 1;
+        match b.get(i)? {
+            b',' => {
+                i = skip_space(b, i + 1);
+                if b.get(i) == Some(&b'>') {
+                    return (2..=5).contains(&n).then_some(i + 1);
+                }
+            }
+            b'>' => return (2..=5).contains(&n).then_some(i + 1),
+            _ => return None,
+        }
+    }
+}
+
 /// A number as the grammar's `number` reads it, with an optional sign (and
-/// spaces after the sign): where it ends.
-fn plain_number(b: &[u8], mut i: usize) -> Option<usize> {
-    if matches!(b.get(i), Some(b'-' | b'+')) {
+/// spaces after the sign): where it ends, and its value.
+fn plain_number(b: &[u8], mut i: usize) -> Option<(usize, Option<f64>)> {
+    let mut negative = false;
+    if let Some(&s @ (b'-' | b'+')) = b.get(i) {
+        negative = s == b'-';
         i = skip_space(b, i + 1);
     }
-    let start = i;
-    while i < b.len() && b[i].is_ascii_digit() {
-        i += 1;
-    }
-    let whole = i > start;
-    if b.get(i) == Some(&b'.') {
-        i += 1;
-        let frac = i;
-        while i < b.len() && b[i].is_ascii_digit() {
-            i += 1;
-        }
-        if !whole && i == frac {
-            return None;
-        }
-    } else if !whole {
+    let (n, v) = super::decimal::prefix(b.get(i..)?)?;
+    let end = i + n;
+    if matches!(b.get(end), Some(b'e' | b'E')) {
+        // `2e` is the number 2 and a name: not plain.
         return None;
     }
-    if matches!(b.get(i), Some(b'e' | b'E')) {
-        let mut j = i + 1;
-        if matches!(b.get(j), Some(b'+' | b'-')) {
-            j += 1;
-        }
-        if b.get(j).is_some_and(u8::is_ascii_digit) {
-            while j < b.len() && b[j].is_ascii_digit() {
-                j += 1;
-            }
-            i = j;
-        } else {
-            // `2e` is the number 2 and a name: not plain.
-            return None;
-        }
-    }
-    Some(i)
+    Some((end, v.map(|v| if negative { -v } else { v })))
 }
 
 /// Where the digits of a number starting at `i` end: digits and points, then
@@ -374,6 +440,14 @@ fn skip_gap(b: &[u8], mut i: usize) -> usize {
     }
 }
 
+/// Where the signed number at `i` ends (as [`number`] reads it).
+fn skip_number(b: &[u8], mut i: usize) -> usize {
+    if let Some(b'-' | b'+') = b.get(i) {
+        i = skip_gap(b, i + 1);
+    }
+    number_end(b, i)
+}
+
 /// A signed number at `i` (a sign, spaces, then the digits the grammar's
 /// `number` takes): its value and where it ends.
 fn number(text: &str, mut i: usize) -> Result<(f64, usize), BadNumber> {
@@ -384,11 +458,13 @@ fn number(text: &str, mut i: usize) -> Result<(f64, usize), BadNumber> {
         negative = s == b'-';
         i = skip_gap(b, i + 1);
     }
-    let digits = i;
-    i = number_end(b, i);
-    match text[digits..i].parse::<f64>() {
-        Ok(v) if v.is_finite() => Ok((if negative { -v } else { v }, i)),
-        _ => Err(BadNumber { start, end: i }),
+    match super::decimal::prefix(&b[i..]) {
+        Some((n, Some(v))) => Ok((if negative { -v } else { v }, i + n)),
+        Some((n, None)) => Err(BadNumber { start, end: i + n }),
+        None => Err(BadNumber {
+            start,
+            end: number_end(b, i),
+        }),
     }
 }
 

@@ -26,6 +26,10 @@ pub struct Lowerer {
     /// Branch bodies left unread, by offsets in the file, in order (see
     /// [`super::prepass::Marks::deferred`]).
     pub deferred: Vec<(usize, usize)>,
+    /// Data bodies the prepass has read, by the offset in the file of their
+    /// `{`, in order (see [`super::prepass::Marks::data_runs`]); each taken
+    /// when its body is lowered.
+    pub runs: Vec<(usize, Option<super::data::DataRun>)>,
 }
 
 type P<'i> = Pair<'i, Rule>;
@@ -45,8 +49,21 @@ impl Lowerer {
             } else if p.as_rule() == Rule::data_run {
                 out.extend(self.data(&p).map(Item::Data));
             } else if p.as_rule() == Rule::data_body {
+                let at = self.span(&p).start as usize;
                 let text = p.into_inner().next().expect("data_text");
-                out.extend(self.data(&text).map(Item::Data));
+                let read = self
+                    .runs
+                    .binary_search_by_key(&at, |r| r.0)
+                    .ok()
+                    .and_then(|k| self.runs[k].1.take());
+                let run = match read {
+                    Some(mut run) => {
+                        run.span = self.span(&text);
+                        Some(Rc::new(run))
+                    }
+                    None => self.data(&text),
+                };
+                out.extend(run.map(Item::Data));
             } else {
                 out.push(self.item(p));
             }
@@ -497,7 +514,7 @@ impl Lowerer {
             }
             Rule::chain | Rule::sum => self.chain(p),
             Rule::number => {
-                let v = p.as_str().parse::<f64>().ok().filter(|v| v.is_finite());
+                let v = super::decimal::parse(p.as_str());
                 self.number(v, span)
             }
             Rule::plain_vector => self.plain_vector(&p, span),

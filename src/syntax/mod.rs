@@ -7,6 +7,7 @@
 pub mod ast;
 pub mod builtins;
 pub mod data;
+pub mod decimal;
 pub mod intern;
 pub mod keywords;
 mod lower;
@@ -108,6 +109,10 @@ pub fn parse_with(
             .deferred
             .iter()
             .map(|&(s, e)| (s + base, e + base))
+            .collect(),
+        runs: std::mem::take(&mut marks.data_runs)
+            .into_iter()
+            .map(|(at, run)| (at + base, Some(run)))
             .collect(),
     };
     match RtsParser::parse(Rule::file, text) {

@@ -35,6 +35,7 @@ struct Scanner<'a> {
     plain_open: Option<usize>,
     /// The `{` of every block body that holds only plain numbers and vectors.
     data_bodies: Vec<usize>,
+    data_runs: Vec<(usize, super::data::DataRun)>,
     /// The first `}` that starts its line indented less than the line of the
     /// `{` it closes (`{` offset, `}` offset): where a block whose own `}` is
     /// missing most likely ends, when one stays open at the end.
@@ -80,6 +81,10 @@ pub struct Marks {
     /// The offsets of the `{` of every block body that holds nothing but two or
     /// more plain numbers and vectors separated by commas.
     pub data_bodies: Vec<usize>,
+    /// The numbers of those bodies, read as they were checked, by the offset
+    /// of their `{` (a body whose numbers do not all fit in an `f64` has none:
+    /// the lowering reads it again to report the number).
+    pub data_runs: Vec<(usize, super::data::DataRun)>,
     /// The bodies (from after the parameter list to the `#` of `#end`) of the
     /// macros whose brackets do not balance as written, such as
     /// `#if (F) #write (H, "{", #else mesh2 { #end`: POV-Ray reads a macro token by
@@ -139,6 +144,7 @@ pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Marks) {
         prev: b'{',
         plain_open: None,
         data_bodies: Vec::new(),
+        data_runs: Vec::new(),
         misindented: None,
         open_macro: None,
         token_level: Vec::new(),
@@ -152,6 +158,7 @@ pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Marks) {
         s.diags,
         Marks {
             data_bodies: s.data_bodies,
+            data_runs: s.data_runs,
             token_level: s.token_level,
             blank: s.blank,
             deferred: s.deferred,
@@ -513,6 +520,7 @@ impl Scanner<'_> {
         self.directives.truncate(slot + 1);
         self.plain_open = None;
         self.data_bodies.retain(|&at| at < hash);
+        self.data_runs.retain(|&(at, _)| at < hash);
         // The body starts after the parameter list.
         let body = self.bytes[hash..i]
             .iter()
@@ -537,8 +545,11 @@ impl Scanner<'_> {
                 }
                 if open == b'{' && self.plain_open == Some(at) {
                     let body = std::str::from_utf8(&self.bytes[at + 1..i]).unwrap_or("");
-                    if super::data::is_plain_body(body) {
+                    if let Some(run) = super::data::plain_body(body, Span::default()) {
                         self.data_bodies.push(at);
+                        if let Some(run) = run {
+                            self.data_runs.push((at, run));
+                        }
                         // The grammar skips the body whole: its vectors need
                         // no marks (a mesh's million would cost memory).
                         while self.plain_vectors.last().is_some_and(|&v| v > at) {
@@ -623,6 +634,7 @@ impl Scanner<'_> {
                             .map_or(hash, |p| macro_hash + p + 1);
                         self.brackets.truncate(depth);
                         self.data_bodies.retain(|&at| at < macro_hash);
+                        self.data_runs.retain(|&(at, _)| at < macro_hash);
                         self.deferred.retain(|&(at, _)| at < macro_hash);
                         self.open_bodies.retain(|b| b.group < slot + 1);
                         self.token_level.push((body, hash));

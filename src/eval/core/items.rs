@@ -153,7 +153,7 @@ impl Evaluator<'_> {
     /// A packed run of numbers and vectors as the items it was written as: each
     /// number and vector a value with its own span, and the commas between.
     fn unpack(&mut self, run: &crate::syntax::data::DataRun, out: &mut Sink) {
-        use crate::syntax::data::{scan, Piece};
+        use crate::syntax::data::{scan_places, Piece};
         let base = run.span.start as usize;
         let file = run.span.file;
         let text = &self.sources.get(file).text;
@@ -161,13 +161,15 @@ impl Evaluator<'_> {
             return;
         };
         let at = |a: usize, b: usize| Span::new(file, base + a, base + b);
-        // The lowering read this text already, so it reads again.
-        let _ = scan(slice, |p| match p {
+        // The numbers were read with the run: only their places are found again.
+        let mut elements = run.elements();
+        scan_places(slice, |p| match p {
             Piece::Comma(i) => out.push(Tok::Comma(at(i, i + 1))),
-            Piece::Element { start, end, values } => {
-                let v = match values {
-                    [x] => Value::Float(*x),
-                    v => Value::Vector(super::value::Vector::from_slice(v)),
+            Piece::Element { start, end, .. } => {
+                let v = match elements.next() {
+                    Some([x]) => Value::Float(*x),
+                    Some(v) => Value::Vector(super::value::Vector::from_slice(v)),
+                    None => Value::Poison,
                 };
                 out.push(Tok::Val(v, at(start, end)));
             }
