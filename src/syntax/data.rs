@@ -257,30 +257,28 @@ pub fn read(text: &str, span: Span) -> Result<DataRun, BadNumber> {
     })
 }
 
-/// Whether `text` (the inside of a `{ … }`, comments excluded by the caller)
-/// is nothing but two or more plain elements separated by commas, as the
-/// grammar's `data_run` reads them: numbers with an optional sign, and vectors
-/// of 2 to 5 such numbers with commas between (a trailing comma allowed, in a
-/// vector and after the last element). Such a body is read as one packed run.
+/// Whether `text` (the inside of a `{ … }`) is nothing but two or more plain
+/// elements separated by commas, as the grammar's `data_run` reads them:
+/// numbers with an optional sign, and vectors of 2 to 5 such numbers with
+/// commas between (a trailing comma allowed, in a vector and after the last
+/// element; no comments). Such a body is read as one packed run.
 pub fn is_plain_body(text: &str) -> bool {
-    plain_body(text, Span::default()).is_some()
+    matches!(plain_body(text.as_bytes(), 0), Some((end, _)) if end == text.len())
 }
 
-/// The packed run of a body [`is_plain_body`] accepts, read in the same pass
-/// that checks it: `None` when the body is not plain, `Some(None)` when it is
-/// but a number does not fit in an `f64` (left to [`read`] to report).
-pub fn plain_body(text: &str, span: Span) -> Option<Option<DataRun>> {
-    let b = text.as_bytes();
-    let mut values = Vec::with_capacity(text.len() / 6);
+/// The body that starts at `i` (after its `{`) when it is plain (see
+/// [`is_plain_body`]), read in the same pass that checks it: where it stops
+/// (its `}`, or the end of `b`) and its packed run, `None` when a number does
+/// not fit in an `f64` (left to [`read`] to report). `None` when the body is
+/// not plain; reading stops at the first byte that shows it.
+pub fn plain_body(b: &[u8], mut i: usize) -> Option<(usize, Option<DataRun>)> {
+    let mut values = Vec::new();
     let mut dims: Vec<u8> = Vec::new();
     let mut uniform: Option<u8> = None;
     let mut fits = true;
     let mut len = 0;
-    let mut i = skip_space(b, 0);
-    loop {
-        if i >= b.len() {
-            break;
-        }
+    i = skip_space(b, i);
+    while i < b.len() && b[i] != b'}' {
         let before = values.len();
         i = plain_element_into(b, i, &mut values, &mut fits)?;
         let n = (values.len() - before) as u8;
@@ -298,7 +296,7 @@ pub fn plain_body(text: &str, span: Span) -> Option<Option<DataRun>> {
         len += 1;
         i = skip_space(b, i);
         match b.get(i) {
-            None => break,
+            None | Some(b'}') => break,
             Some(b',') => i = skip_space(b, i + 1),
             Some(_) => return None,
         }
@@ -307,18 +305,19 @@ pub fn plain_body(text: &str, span: Span) -> Option<Option<DataRun>> {
         return None;
     }
     if !fits {
-        return Some(None);
+        return Some((i, None));
     }
     values.shrink_to_fit();
-    Some(Some(DataRun {
-        span,
+    let run = DataRun {
+        span: Span::default(),
         values,
         dims: match uniform {
             Some(n) => Dims::Uniform(n),
             None => Dims::Mixed(dims),
         },
         len,
-    }))
+    };
+    Some((i, Some(run)))
 }
 
 /// Spaces only (a body with comments is not marked).

@@ -31,10 +31,9 @@ struct Scanner<'a> {
     question_depth: usize,
     /// The last significant byte, to tell a vector's `<` from less-than.
     prev: u8,
-    /// The innermost `{` whose contents so far could be plain data.
-    plain_open: Option<usize>,
     /// The `{` of every block body that holds only plain numbers and vectors.
     data_bodies: Vec<usize>,
+    /// Their numbers, by the offset of the `{`.
     data_runs: Vec<(usize, super::data::DataRun)>,
     /// The first `}` that starts its line indented less than the line of the
     /// `{` it closes (`{` offset, `}` offset): where a block whose own `}` is
@@ -142,7 +141,6 @@ pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Marks) {
         prefix_run: 0,
         question_depth: 0,
         prev: b'{',
-        plain_open: None,
         data_bodies: Vec::new(),
         data_runs: Vec::new(),
         misindented: None,
@@ -222,19 +220,6 @@ fn indentation(b: &[u8], i: usize) -> (&[u8], bool) {
     (&b[start..end], end == i)
 }
 
-/// Whether byte `i` can be part of a body of plain numbers and vectors.
-fn data_byte(b: &[u8], i: usize) -> bool {
-    match b[i] {
-        b'0'..=b'9' | b'.' | b'+' | b'-' | b'<' | b'>' | b',' | b' ' | b'\t' | b'\r' | b'\n' => {
-            true
-        }
-        0x0B | 0x0C | b'}' => true,
-        // An exponent: `1e5`, `2.E-3`.
-        b'e' | b'E' => i > 0 && (b[i - 1].is_ascii_digit() || b[i - 1] == b'.'),
-        _ => false,
-    }
-}
-
 fn closer_for(open: u8) -> u8 {
     match open {
         b'{' => b'}',
@@ -269,9 +254,6 @@ impl Scanner<'_> {
         let mut i = 0;
         while i < b.len() {
             let c = b[i];
-            if self.plain_open.is_some() && !data_byte(b, i) {
-                self.plain_open = None;
-            }
             match c {
                 DATA_BODY | PLAIN_VECTOR => {
                     self.diags.push(
@@ -313,11 +295,24 @@ impl Scanner<'_> {
                     continue;
                 }
                 b'{' | b'(' | b'[' => {
-                    self.plain_open = (c == b'{').then_some(i);
                     self.brackets.push((c, i));
                     if self.brackets.len() > MAX_NESTING {
                         self.too_deep(i, 1, "brackets");
                         return;
+                    }
+                    // A body of plain numbers and vectors is read here, once,
+                    // and skipped to its `}` (which closes it as any other).
+                    if c == b'{' {
+                        if let Some((end, run)) = super::data::plain_body(b, i + 1) {
+                            if b.get(end) == Some(&b'}') {
+                                self.data_bodies.push(i);
+                                if let Some(run) = run {
+                                    self.data_runs.push((i, run));
+                                }
+                                i = end;
+                                continue;
+                            }
+                        }
                     }
                 }
                 b'}' | b')' | b']' => {
@@ -518,7 +513,6 @@ impl Scanner<'_> {
         let end = directive_end(self.bytes, i + 1, open_above)?;
         self.brackets.truncate(depth);
         self.directives.truncate(slot + 1);
-        self.plain_open = None;
         self.data_bodies.retain(|&at| at < hash);
         self.data_runs.retain(|&(at, _)| at < hash);
         // The body starts after the parameter list.
@@ -543,21 +537,6 @@ impl Scanner<'_> {
                 if !self.open_bodies.is_empty() {
                     self.body_bracket_closed(c, i);
                 }
-                if open == b'{' && self.plain_open == Some(at) {
-                    let body = std::str::from_utf8(&self.bytes[at + 1..i]).unwrap_or("");
-                    if let Some(run) = super::data::plain_body(body, Span::default()) {
-                        self.data_bodies.push(at);
-                        if let Some(run) = run {
-                            self.data_runs.push((at, run));
-                        }
-                        // The grammar skips the body whole: its vectors need
-                        // no marks (a mesh's million would cost memory).
-                        while self.plain_vectors.last().is_some_and(|&v| v > at) {
-                            self.plain_vectors.pop();
-                        }
-                    }
-                }
-                self.plain_open = None;
                 true
             }
             Some((open, at)) => {
