@@ -26,7 +26,18 @@ pub struct DataRun {
     pub dims: Dims,
     /// How many elements.
     pub len: usize,
+    /// Where each element and comma was written, in order, as offsets into
+    /// the run's text (a comma as `(at, COMMA)`): kept for short runs read by
+    /// the prepass (a triangle's corners), whose elements become values with
+    /// spans of their own; empty otherwise ([`scan_places`] finds them).
+    pub places: Vec<(u32, u32)>,
 }
+
+/// The end [`DataRun::places`] gives a comma.
+pub const COMMA: u32 = u32::MAX;
+
+/// Runs longer than this keep no [`DataRun::places`].
+const PLACES_MAX: usize = 32;
 
 impl DataRun {
     /// The numbers of each element, in order.
@@ -254,6 +265,7 @@ pub fn read(text: &str, span: Span) -> Result<DataRun, BadNumber> {
             _ => Dims::Mixed(dims),
         },
         len,
+        places: Vec::new(),
     })
 }
 
@@ -263,7 +275,7 @@ pub fn read(text: &str, span: Span) -> Result<DataRun, BadNumber> {
 /// commas between (a trailing comma allowed, in a vector and after the last
 /// element; no comments). Such a body is read as one packed run.
 pub fn is_plain_body(text: &str) -> bool {
-    matches!(plain_body(text.as_bytes(), 0), Some((end, _)) if end == text.len())
+    matches!(plain_body(text.as_bytes(), 0, &mut Vec::new()), Some((end, _)) if end == text.len())
 }
 
 /// The body that starts at `i` (after its `{`) when it is plain (see
@@ -271,8 +283,15 @@ pub fn is_plain_body(text: &str) -> bool {
 /// (its `}`, or the end of `b`) and its packed run, `None` when a number does
 /// not fit in an `f64` (left to [`read`] to report). `None` when the body is
 /// not plain; reading stops at the first byte that shows it.
-pub fn plain_body(b: &[u8], mut i: usize) -> Option<(usize, Option<DataRun>)> {
-    let mut values = Vec::new();
+pub fn plain_body(
+    b: &[u8],
+    mut i: usize,
+    scratch: &mut Vec<f64>,
+) -> Option<(usize, Option<DataRun>)> {
+    let base = i;
+    scratch.clear();
+    let values = scratch;
+    let mut places = Vec::new();
     let mut dims: Vec<u8> = Vec::new();
     let mut uniform: Option<u8> = None;
     let mut fits = true;
@@ -280,7 +299,11 @@ pub fn plain_body(b: &[u8], mut i: usize) -> Option<(usize, Option<DataRun>)> {
     i = skip_space(b, i);
     while i < b.len() && b[i] != b'}' {
         let before = values.len();
-        i = plain_element_into(b, i, &mut values, &mut fits)?;
+        let start = i;
+        i = plain_element_into(b, i, values, &mut fits)?;
+        if len < PLACES_MAX {
+            places.push(((start - base) as u32, (i - base) as u32));
+        }
         let n = (values.len() - before) as u8;
         match uniform {
             None if dims.is_empty() => uniform = Some(n),
@@ -297,7 +320,12 @@ pub fn plain_body(b: &[u8], mut i: usize) -> Option<(usize, Option<DataRun>)> {
         i = skip_space(b, i);
         match b.get(i) {
             None | Some(b'}') => break,
-            Some(b',') => i = skip_space(b, i + 1),
+            Some(b',') => {
+                if len <= PLACES_MAX {
+                    places.push(((i - base) as u32, COMMA));
+                }
+                i = skip_space(b, i + 1);
+            }
             Some(_) => return None,
         }
     }
@@ -307,15 +335,18 @@ pub fn plain_body(b: &[u8], mut i: usize) -> Option<(usize, Option<DataRun>)> {
     if !fits {
         return Some((i, None));
     }
-    values.shrink_to_fit();
+    if len > PLACES_MAX {
+        places = Vec::new();
+    }
     let run = DataRun {
         span: Span::default(),
-        values,
+        values: values.as_slice().to_vec(),
         dims: match uniform {
             Some(n) => Dims::Uniform(n),
             None => Dims::Mixed(dims),
         },
         len,
+        places,
     };
     Some((i, Some(run)))
 }
@@ -506,6 +537,40 @@ mod tests {
         })
         .unwrap();
         assert_eq!(seen, [(0, 1), (1, 2), (3, 9)]);
+    }
+
+    #[test]
+    fn a_plain_body_keeps_the_places_the_scanner_finds() {
+        for text in [
+            " <1, 2, 3>, - 4 ,<5,6>,",
+            "1,2",
+            &"7, ".repeat(32),
+            &"7, ".repeat(33),
+        ] {
+            let (end, run) = plain_body(text.as_bytes(), 0, &mut Vec::new()).unwrap();
+            assert_eq!(end, text.len());
+            let run = run.unwrap();
+            let mut want = Vec::new();
+            let mut values = Vec::new();
+            scan(text, |p| match p {
+                Piece::Element {
+                    start,
+                    end,
+                    values: v,
+                } => {
+                    want.push((start as u32, end as u32));
+                    values.extend_from_slice(v);
+                }
+                Piece::Comma(at) => want.push((at as u32, COMMA)),
+            })
+            .unwrap();
+            assert_eq!(run.values, values, "{text}");
+            if run.len <= PLACES_MAX {
+                assert_eq!(run.places, want, "{text}");
+            } else {
+                assert!(run.places.is_empty(), "a long run keeps no places");
+            }
+        }
     }
 
     #[test]

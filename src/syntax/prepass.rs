@@ -35,6 +35,8 @@ struct Scanner<'a> {
     data_bodies: Vec<usize>,
     /// Their numbers, by the offset of the `{`.
     data_runs: Vec<(usize, super::data::DataRun)>,
+    /// The numbers of the body being read.
+    scratch: Vec<f64>,
     /// The first `}` that starts its line indented less than the line of the
     /// `{` it closes (`{` offset, `}` offset): where a block whose own `}` is
     /// missing most likely ends, when one stays open at the end.
@@ -143,6 +145,7 @@ pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Marks) {
         prev: b'{',
         data_bodies: Vec::new(),
         data_runs: Vec::new(),
+        scratch: Vec::new(),
         misindented: None,
         open_macro: None,
         token_level: Vec::new(),
@@ -303,7 +306,9 @@ impl Scanner<'_> {
                     // A body of plain numbers and vectors is read here, once,
                     // and skipped to its `}` (which closes it as any other).
                     if c == b'{' {
-                        if let Some((end, run)) = super::data::plain_body(b, i + 1) {
+                        if let Some((end, run)) =
+                            super::data::plain_body(b, i + 1, &mut self.scratch)
+                        {
                             if b.get(end) == Some(&b'}') {
                                 self.data_bodies.push(i);
                                 if let Some(run) = run {

@@ -153,7 +153,7 @@ impl Evaluator<'_> {
     /// A packed run of numbers and vectors as the items it was written as: each
     /// number and vector a value with its own span, and the commas between.
     fn unpack(&mut self, run: &crate::syntax::data::DataRun, out: &mut Sink) {
-        use crate::syntax::data::{scan_places, Piece};
+        use crate::syntax::data::{scan_places, Piece, COMMA};
         let base = run.span.start as usize;
         let file = run.span.file;
         let text = &self.sources.get(file).text;
@@ -161,9 +161,10 @@ impl Evaluator<'_> {
             return;
         };
         let at = |a: usize, b: usize| Span::new(file, base + a, base + b);
-        // The numbers were read with the run: only their places are found again.
+        // The numbers were read with the run: only their places are needed,
+        // kept with a short run, found again in a long one.
         let mut elements = run.elements();
-        scan_places(slice, |p| match p {
+        let mut piece = |p: Piece| match p {
             Piece::Comma(i) => out.push(Tok::Comma(at(i, i + 1))),
             Piece::Element { start, end, .. } => {
                 let v = match elements.next() {
@@ -173,7 +174,21 @@ impl Evaluator<'_> {
                 };
                 out.push(Tok::Val(v, at(start, end)));
             }
-        });
+        };
+        if run.places.is_empty() {
+            scan_places(slice, piece);
+        } else {
+            for &(start, end) in &run.places {
+                piece(match end {
+                    COMMA => Piece::Comma(start as usize),
+                    end => Piece::Element {
+                        start: start as usize,
+                        end: end as usize,
+                        values: &[],
+                    },
+                });
+            }
+        }
     }
 
     /// Lays the texture block `top` over the texture just declared as `target`.
