@@ -392,6 +392,29 @@ fn trie(words: &[&str]) -> String {
             Some((c, rest)) => insert(n.children.entry(*c).or_default(), rest),
         }
     }
+    // Many alternatives are split in two by their first letter, a range test
+    // choosing the half (pest tries alternatives in order: a word starting
+    // with `s` would otherwise be compared with every letter before it).
+    fn choice(alts: &[(u8, String)]) -> String {
+        if alts.len() <= 4 {
+            return alts
+                .iter()
+                .map(|(_, a)| a.as_str())
+                .collect::<Vec<_>>()
+                .join(" | ");
+        }
+        let (left, right) = alts.split_at(alts.len() / 2);
+        let range = format!(
+            "'{}'..'{}'",
+            left[0].0 as char,
+            left[left.len() - 1].0 as char
+        );
+        format!(
+            "&({range}) ~ ({}) | !({range}) ~ ({})",
+            choice(left),
+            choice(right)
+        )
+    }
     // One alternative per child, each a run of letters as long as the trie
     // does not branch; the word ending here comes last.
     fn alternatives(n: &Node, out: &mut String) {
@@ -412,12 +435,12 @@ fn trie(words: &[&str]) -> String {
                 alternatives(node, &mut inner);
                 alt.push_str(&format!(" ~ ({inner})"));
             }
-            alts.push(alt);
+            alts.push((*c, alt));
         }
+        out.push_str(&choice(&alts));
         if n.end {
-            alts.push("!ident_char".into());
+            out.push_str(" | !ident_char");
         }
-        out.push_str(&alts.join(" | "));
     }
     let mut root = Node::default();
     for w in words {
