@@ -35,8 +35,8 @@ pub(crate) enum Piece {
         start: usize,
         /// Where it ends.
         end: usize,
-        /// The words its text mentions.
-        words: Vec<String>,
+        /// The words its text mentions, interned, each once.
+        words: Vec<Sym>,
     },
     /// Anything else, evaluated at the `#include`.
     Eager {
@@ -211,16 +211,18 @@ fn value_end(text: &str, mut i: usize) -> usize {
     text.len()
 }
 
-/// The words of `text[a..b]` (identifiers, keywords: what it may refer to).
-fn words(text: &str, mut a: usize, b: usize) -> Vec<String> {
-    let mut out: Vec<String> = Vec::new();
+/// The words of `text[a..b]` (identifiers, keywords: what it may refer to),
+/// each once.
+fn words(text: &str, mut a: usize, b: usize) -> Vec<Sym> {
+    let mut out: Vec<Sym> = Vec::new();
     while let Some((t, s, e)) = next(text, a) {
         if s >= b {
             break;
         }
         if let Tok::Word(w) = t {
-            if !out.iter().any(|o| o == w) {
-                out.push(w.to_string());
+            let w = intern(w);
+            if !out.contains(&w) {
+                out.push(w);
             }
         }
         a = e;
@@ -336,7 +338,7 @@ impl Evaluator<'_> {
         pieces.iter().any(|p| match p {
             Piece::Named { name, words, .. } => {
                 self.scope.is_local(intern(name))
-                    || words.iter().any(|w| self.scope.is_local(intern(w)))
+                    || words.iter().any(|&w| self.scope.is_local(w))
             }
             Piece::Guard { name, inner } => {
                 self.scope.is_local(intern(name)) || self.mentions_locals(inner)
@@ -430,8 +432,8 @@ impl Evaluator<'_> {
                         end: *end,
                     }));
                     self.pending.by_name.insert(sym, k);
-                    for w in words {
-                        self.pending.mentions.entry(intern(w)).or_default().push(k);
+                    for &w in words {
+                        self.pending.mentions.entry(w).or_default().push(k);
                     }
                 }
             }
@@ -525,7 +527,7 @@ mod tests {
         let p = cut(t, 0, t.len()).expect("understood");
         assert_eq!(names(&p), ["*", "A", "T", "M", "*", "S"]);
         if let Piece::Named { words, .. } = &p[2] {
-            assert!(words.contains(&"A".to_string()) && words.contains(&"B".to_string()));
+            assert!(words.contains(&intern("A")) && words.contains(&intern("B")));
         }
     }
 
