@@ -120,6 +120,19 @@ impl Lowerer {
         let span = self.span(&p);
         match p.as_rule() {
             Rule::block => Item::Block(std::rc::Rc::new(self.block(p))),
+            Rule::item_block => {
+                // (Its span may take the spaces after a keyword alone.)
+                let alone = p.clone().into_inner().next().is_some_and(|k| {
+                    p.as_str()[k.as_span().end() - p.as_span().start()..]
+                        .trim_ascii()
+                        .is_empty()
+                });
+                if alone {
+                    Item::Keyword(self.keyword(p.into_inner().next().expect("keyword")))
+                } else {
+                    Item::Block(std::rc::Rc::new(self.block(p)))
+                }
+            }
             Rule::keyword => Item::Keyword(self.keyword(p)),
             Rule::bracket => {
                 let items = self.items(p.into_inner());
@@ -558,6 +571,12 @@ impl Lowerer {
                 let mut inner = p.into_inner();
                 let n = inner.next().expect("name");
                 let name_span = self.span(&n);
+                if inner.peek().is_none() {
+                    return Expr {
+                        kind: ExprKind::Ident(intern(n.as_str())),
+                        span: name_span,
+                    };
+                }
                 let mut args: Vec<Arg> = inner
                     .map(|a| match a.as_rule() {
                         Rule::block => Arg::Block(self.block(a)),
@@ -578,10 +597,6 @@ impl Lowerer {
                     span,
                 }
             }
-            Rule::ident => Expr {
-                kind: ExprKind::Ident(intern(p.as_str())),
-                span,
-            },
             Rule::value_block => {
                 let b = self.block(p.into_inner().next().expect("value block"));
                 Expr {
@@ -642,6 +657,23 @@ impl Lowerer {
     /// bind tighter: `-V.x` is `-(V.x)`). Iterative, so a long chain cannot
     /// exhaust the stack.
     fn chain(&mut self, p: P) -> Expr {
+        // One operand alone (most values): itself, without the stacks.
+        let mut inner = p.clone().into_inner();
+        if let (Some(only), None) = (inner.next(), inner.next()) {
+            if !matches!(
+                only.as_rule(),
+                Rule::prefix_op
+                    | Rule::dot
+                    | Rule::index
+                    | Rule::or_op
+                    | Rule::and_op
+                    | Rule::cmp_op
+                    | Rule::add_op
+                    | Rule::mul_op
+            ) {
+                return self.expr(only);
+            }
+        }
         let span = self.span(&p);
         let mut operands: Vec<Expr> = Vec::new();
         let mut ops: Vec<BinOp> = Vec::new();

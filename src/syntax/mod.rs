@@ -296,7 +296,10 @@ fn syntax_error(text: &str, file: FileId, at: usize, e: &pest::error::Error<Rule
             // (pest folds stacks of many tries into their parent), never one
             // expected where the error is: that would show as its keyword.
             let deepest = stack.deepest.get_rule().copied();
-            if let Some(name) = deepest.filter(|r| *r != Rule::block).and_then(names::human) {
+            if let Some(name) = deepest
+                .filter(|r| !matches!(r, Rule::block | Rule::item_block))
+                .and_then(names::human)
+            {
                 expected.push(name);
             }
         }

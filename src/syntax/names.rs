@@ -14,7 +14,7 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         | Rule::op_char
         | Rule::marked_vector => return None,
         Rule::file | Rule::one_item | Rule::only_trivia | Rule::item | Rule::body => "a statement",
-        Rule::block | Rule::sized_fn => "a block",
+        Rule::block | Rule::item_block | Rule::sized_fn => "a block",
         Rule::func_params => "a parameter list",
         Rule::fn_keyword | Rule::fn_word => "`function`",
         Rule::bracket => "`[`",
@@ -47,7 +47,7 @@ pub fn human(rule: Rule) -> Option<&'static str> {
         Rule::decl_kind => "`declare` or `local`",
         Rule::deprecated | Rule::kw_deprecated => return None,
         Rule::once_kw => "`once`",
-        Rule::lvalue | Rule::ident_name | Rule::ident | Rule::ident_raw => "a name",
+        Rule::lvalue | Rule::ident_name | Rule::ident_raw => "a name",
         Rule::rhs => "a value",
         Rule::elseif_d | Rule::kw_elseif => "`#elseif`",
         Rule::else_d | Rule::kw_else => "`#else`",

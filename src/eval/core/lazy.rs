@@ -337,8 +337,7 @@ impl Evaluator<'_> {
     fn mentions_locals(&self, pieces: &[Piece]) -> bool {
         pieces.iter().any(|p| match p {
             Piece::Named { name, words, .. } => {
-                self.scope.is_local(intern(name))
-                    || words.iter().any(|&w| self.scope.is_local(w))
+                self.scope.is_local(intern(name)) || words.iter().any(|&w| self.scope.is_local(w))
             }
             Piece::Guard { name, inner } => {
                 self.scope.is_local(intern(name)) || self.mentions_locals(inner)
