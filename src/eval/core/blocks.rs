@@ -4,7 +4,7 @@ use super::cursor::{Cursor, Sink, Tok};
 use super::value::Value;
 use super::{Evaluator, R};
 use crate::diag::{codes, Diagnostic};
-use crate::eval::objects::object::OBJECT_BLOCKS;
+use crate::eval::objects::object::{is_object_block, OBJECT_BLOCKS};
 use crate::syntax::ast::Block;
 
 /// Blocks this release evaluates besides the objects ([`OBJECT_BLOCKS`]).
@@ -70,7 +70,9 @@ pub(crate) const BLOCKS: &[&str] = &[
 
 /// Whether `k` opens a block this release evaluates.
 pub(crate) fn is_evaluated_block(k: &str) -> bool {
-    BLOCKS.contains(&k) || OBJECT_BLOCKS.contains(&k)
+    static SET: std::sync::LazyLock<rustc_hash::FxHashSet<&'static str>> =
+        std::sync::LazyLock::new(|| BLOCKS.iter().chain(OBJECT_BLOCKS).copied().collect());
+    SET.contains(k)
 }
 
 /// Whether `k` opens a block (`k { … }`).
@@ -121,9 +123,7 @@ impl Evaluator<'_> {
             kw if outer.is_blob_component(kw) => {
                 Value::Object(std::sync::Arc::new(self.blob_component(&mut c)?))
             }
-            kw if OBJECT_BLOCKS.contains(&kw) => {
-                Value::Object(std::sync::Arc::new(self.object(&mut c)?))
-            }
+            kw if is_object_block(kw) => Value::Object(std::sync::Arc::new(self.object(&mut c)?)),
             "clipped_by" | "bounded_by" | "contained_by" | "vertex_vectors" | "normal_vectors"
             | "uv_vectors" | "face_indices" | "normal_indices" | "uv_indices" | "texture_list" => {
                 self.list_block(&mut c)?

@@ -6,7 +6,6 @@
 //! the block itself is in, set by [`Evaluator::within`] and restored after.
 
 use super::Evaluator;
-use crate::eval::objects::object::OBJECT_BLOCKS;
 use crate::syntax::Sym;
 
 /// What the items being expanded are inside. Small and `Copy`: a block's
@@ -45,7 +44,7 @@ impl Context {
             // Texture bodies (also a texture_map's entries) and objects read a
             // pigment, finish or normal as a change to the one in force.
             defer_material_blocks: (matches!(kw, "texture" | "texture_map" | "interior_texture")
-                || OBJECT_BLOCKS.contains(&kw))
+                || crate::eval::objects::object::is_object_block(kw))
                 && !object_pattern,
             blob_items: kw == "blob",
             pattern_items: matches!(kw, "pigment" | "normal" | "texture" | "density"),

@@ -48,6 +48,13 @@ pub const OBJECT_BLOCKS: &[&str] = &[
     "sphere_sweep",
 ];
 
+/// Whether `k` is one of [`OBJECT_BLOCKS`] (one hash lookup: every block asks).
+pub(crate) fn is_object_block(k: &str) -> bool {
+    static SET: std::sync::LazyLock<rustc_hash::FxHashSet<&'static str>> =
+        std::sync::LazyLock::new(|| OBJECT_BLOCKS.iter().copied().collect());
+    SET.contains(k)
+}
+
 /// Adds `child` to the members of a new group (`op`: `None` for a union) and
 /// returns the nesting the group gets from it. A child that is a group of the
 /// same kind with nothing of its own (no transform, texture, interior, flags,
