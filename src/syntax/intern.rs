@@ -21,6 +21,10 @@ fn interner() -> &'static Mutex<Interner> {
     static INTERNER: OnceLock<Mutex<Interner>> = OnceLock::new();
     INTERNER.get_or_init(|| {
         let mut i = Interner::default();
+        // Room for the built-ins and the names of the library files (no
+        // rehashing while `colors.inc` and friends are cut).
+        i.map.reserve(4096);
+        i.names.reserve(4096);
         for name in super::builtins::BUILTIN_NAMES {
             i.intern(name);
         }
