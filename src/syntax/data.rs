@@ -291,7 +291,7 @@ pub fn plain_body(
     let base = i;
     scratch.clear();
     let values = scratch;
-    let mut places = Vec::new();
+    let mut places = Vec::with_capacity(16);
     let mut dims: Vec<u8> = Vec::new();
     let mut uniform: Option<u8> = None;
     let mut fits = true;

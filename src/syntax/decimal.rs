@@ -27,30 +27,30 @@ pub fn parse(text: &str) -> Option<f64> {
 /// its sign): where it ends, and its value (`None` when it does not fit in a
 /// finite `f64`). `None` when no number starts there.
 pub fn prefix(b: &[u8]) -> Option<(usize, Option<f64>)> {
+    let digit = |i: usize| b.get(i).map(|c| c.wrapping_sub(b'0')).filter(|d| *d <= 9);
     let mut mantissa: u64 = 0;
-    let mut digits = 0u32;
-    let mut scale: i32 = 0;
     let mut i = 0;
-    while let Some(&d @ b'0'..=b'9') = b.get(i) {
-        mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(d - b'0'));
-        digits = digits.saturating_add(u32::from(mantissa != 0));
+    while let Some(d) = digit(i) {
+        mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(d));
         i += 1;
     }
     let whole = i;
+    let mut fraction = 0;
     if b.get(i) == Some(&b'.') {
         i += 1;
-        while let Some(&d @ b'0'..=b'9') = b.get(i) {
-            mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(d - b'0'));
-            digits = digits.saturating_add(u32::from(mantissa != 0));
-            scale -= 1;
+        let start = i;
+        while let Some(d) = digit(i) {
+            mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(d));
             i += 1;
         }
-        if whole == 0 && i == 1 {
+        fraction = i - start;
+        if whole == 0 && fraction == 0 {
             return None; // a lone `.`
         }
     } else if whole == 0 {
         return None;
     }
+    let mut scale = -(fraction.min(1 << 20) as i32);
     if let Some(b'e' | b'E') = b.get(i) {
         let mut j = i + 1;
         let negative = match b.get(j) {
@@ -66,8 +66,8 @@ pub fn prefix(b: &[u8]) -> Option<(usize, Option<f64>)> {
         };
         let start = j;
         let mut e: i32 = 0;
-        while let Some(&d @ b'0'..=b'9') = b.get(j) {
-            e = e.saturating_mul(10).saturating_add(i32::from(d - b'0'));
+        while let Some(d) = digit(j) {
+            e = e.saturating_mul(10).saturating_add(i32::from(d));
             j += 1;
         }
         if j > start {
@@ -75,11 +75,12 @@ pub fn prefix(b: &[u8]) -> Option<(usize, Option<f64>)> {
             scale = scale.saturating_add(if negative { -e } else { e });
         }
     }
-    // At most 15 significant digits: below 2^53, so exact as an f64, and one
+    // At most 15 digits in all: below 2^53, so exact as an f64, and one
     // multiplication or division by an exact power of ten rounds correctly.
+    // (More digits, leading zeros among them, take the general parser.)
     let m = mantissa as f64;
     let fast = match scale {
-        _ if digits > 15 => None,
+        _ if whole + fraction > 15 => None,
         0 => Some(m),
         1..=22 => Some(m * POW10[scale as usize]),
         -22..=-1 => Some(m / POW10[(-scale) as usize]),
