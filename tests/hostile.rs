@@ -279,6 +279,31 @@ fn control_characters_in_the_source_are_shown_not_sent() {
     assert!(r.stderr.contains("escape.rts:1:"), "{}", r.stderr);
 }
 
+/// A `#` that starts no directive is ignored, also inside a run of numbers and
+/// vectors: evaluation finds the run's elements in the file's own text, where
+/// the `#` still stands (the fuzzer found this looping forever, and in a
+/// vector's last component, `<1, 0, #>`, taking all the memory it could).
+#[test]
+fn a_stray_hash_inside_a_run_of_numbers_is_skipped() {
+    let s = scene(
+        "hash_in_run.rts",
+        "mesh { triangle { <0, 0, 0>, <1, 0, 0>, # <0, 1, 0> } }\n\
+         #declare P = array[3] { 1, <1, 0, #>, 2 };\n\
+         camera { location -3*z look_at 0 }\n",
+    );
+    let r = rts(&["check", &s, "--message-format", "short"]);
+    assert_eq!(
+        r.stdout
+            .matches("warning[rts::syntax::unknown_directive]")
+            .count(),
+        2,
+        "{}",
+        r.stdout
+    );
+    assert!(error_codes(&r).is_empty(), "{}", r.stdout);
+    assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
+}
+
 /// Evaluates `text` with the library and returns the scene's objects.
 fn objects(text: &str) -> Vec<rts::scene::Object> {
     let mut sources = rts::source::SourceMap::new();

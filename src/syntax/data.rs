@@ -126,7 +126,11 @@ fn scan_with(text: &str, read: bool, mut f: impl FnMut(Piece<'_>)) -> Result<(),
         if read {
             number(text, i)
         } else {
-            Ok((0.0, skip_number(text.as_bytes(), i)))
+            match skip_number(text.as_bytes(), i) {
+                // Not a number after all: stop rather than loop.
+                end if end == i => Err(BadNumber { start: i, end }),
+                end => Ok((0.0, end)),
+            }
         }
     };
     let mut i = 0;
@@ -456,11 +460,14 @@ pub fn number_end(b: &[u8], mut i: usize) -> usize {
     i
 }
 
-/// Skips spaces and comments (`// …` to the line's end, nested `/* … */`).
+/// Skips spaces, comments (`// …` to the line's end, nested `/* … */`) and
+/// `#`s: inside a run, a `#` can only be one that no directive name follows,
+/// which the parser's copy of the text has as a space (see the prepass's
+/// `Marks::blank`), so the file's own text reads as the parser read it.
 fn skip_gap(b: &[u8], mut i: usize) -> usize {
     loop {
         match b.get(i) {
-            Some(b' ' | b'\t' | b'\r' | b'\n' | 0x0B | 0x0C) => i += 1,
+            Some(b' ' | b'\t' | b'\r' | b'\n' | 0x0B | 0x0C | b'#') => i += 1,
             Some(0xEF) if b.get(i + 1..i + 3) == Some(&[0xBB, 0xBF]) => i += 3,
             Some(b'/') if super::trivia::comment_end(b, i).is_some() => {
                 i = super::trivia::comment_end(b, i).unwrap_or(b.len());
@@ -537,6 +544,22 @@ mod tests {
         })
         .unwrap();
         assert_eq!(seen, [(0, 1), (1, 2), (3, 9)]);
+    }
+
+    #[test]
+    fn finding_places_skips_a_stray_hash_and_stops_at_what_is_not_a_number() {
+        let mut seen = Vec::new();
+        scan_places("1, # <2, 3,#>", |p| {
+            seen.push(match p {
+                Piece::Element { start, end, .. } => (start, end),
+                Piece::Comma(at) => (at, at + 1),
+            })
+        });
+        assert_eq!(seen, [(0, 1), (1, 2), (5, 13)]);
+        // Text the grammar would not have taken as a run: no endless loop.
+        let mut n = 0;
+        scan_places("1, x, 2 <3, y>", |_| n += 1);
+        assert_eq!(n, 2, "the element and comma before `x`");
     }
 
     #[test]
