@@ -365,48 +365,34 @@ fn skip_space(b: &[u8], mut i: usize) -> usize {
 
 /// A plain number or vector at `i`: where it ends.
 pub(crate) fn plain_element(b: &[u8], i: usize) -> Option<usize> {
-    if b[i] != b'<' {
-        return plain_number(b, i).map(|(end, _)| end);
-    }
-    let mut i = skip_space(b, i + 1);
-    let mut n = 0;
-    loop {
-        i = plain_number(b, i)?.0;
-        n += 1;
-        i = skip_space(b, i);
-        match b.get(i)? {
-            b',' => {
-                i = skip_space(b, i + 1);
-                if b.get(i) == Some(&b'>') {
-                    return (2..=5).contains(&n).then_some(i + 1);
-                }
-            }
-            b'>' => return (2..=5).contains(&n).then_some(i + 1),
-            _ => return None,
-        }
-    }
+    plain_element_with(b, i, |_| {})
 }
 
 /// [`plain_element`], its numbers pushed on `values` (`fits` cleared when
 /// one does not fit in an `f64`).
 fn plain_element_into(b: &[u8], i: usize, values: &mut Vec<f64>, fits: &mut bool) -> Option<usize> {
-    let mut push = |v: Option<f64>| match v {
+    plain_element_with(b, i, |v| match v {
         Some(v) => values.push(v),
         None => {
             *fits = false;
             values.push(0.0);
         }
-    };
+    })
+}
+
+/// A plain number or vector at `i`, each of its numbers given to `number`
+/// (`None` for one that does not fit in an `f64`): where it ends.
+fn plain_element_with(b: &[u8], i: usize, mut number: impl FnMut(Option<f64>)) -> Option<usize> {
     if b[i] != b'<' {
         let (end, v) = plain_number(b, i)?;
-        push(v);
+        number(v);
         return Some(end);
     }
     let mut i = skip_space(b, i + 1);
     let mut n = 0;
     loop {
         let (end, v) = plain_number(b, i)?;
-        push(v);
+        number(v);
         i = skip_space(b, end);
         n += 1;
         match b.get(i)? {
