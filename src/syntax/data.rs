@@ -1,8 +1,10 @@
 //! Literal data at memory speed: a run of plain numbers and vectors
 //! (`3, <0, 0, 0>, <1, 0, 0>, <0, 1, 0>`, the grammar's `data_run`) is scanned
 //! here into packed `f64`s, one pass over its text, instead of one expression
-//! (and one syntax-tree node) per number. Element spans are not kept: the
-//! scanner runs again over the run's text when they are needed.
+//! (and one syntax-tree node) per number. A block body of such elements is
+//! read by the prepass as it checks it ([`plain_body`]); a short run keeps
+//! where its elements are ([`DataRun::places`]), a long one does not (the
+//! places are found again, without the numbers, when they are needed).
 
 use crate::span::Span;
 

@@ -61,7 +61,7 @@ pub fn parse_with(
     }
     // Block bodies of plain numbers and vectors have their `{` marked in the
     // parser's copy of the text (same length, so every offset stays), so the
-    // grammar skips them whole; the lowering scans them.
+    // grammar skips them whole; the lowering takes the numbers the prepass read.
     let original = text;
     let marked;
     // Vectors of plain numbers have their `<` marked the same way. Comments,

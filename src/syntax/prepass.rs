@@ -131,7 +131,7 @@ pub fn check(text: &str, file: FileId) -> Vec<Diagnostic> {
 /// [`check`], and the offsets of the `{` of every block body that holds nothing
 /// but two or more plain numbers and vectors separated by commas (a mesh's
 /// `vertex_vectors { 3, <0,0,0>, … }`): the parser skips such a body at memory
-/// speed and the lowering reads it in one pass (see `data.rs`).
+/// speed; its numbers are read here, as it is checked ([`Marks::data_runs`]).
 pub fn check_marking(text: &str, file: FileId) -> (Vec<Diagnostic>, Marks) {
     let mut s = Scanner {
         bytes: text.as_bytes(),
