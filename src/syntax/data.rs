@@ -235,57 +235,65 @@ pub fn vector_components(text: &str) -> Vec<Component> {
     out
 }
 
+/// How the numbers of a run divide into elements, noted element by element:
+/// one count while every element has the same, one count each from the
+/// first element of another size on.
+#[derive(Default)]
+struct DimsOf {
+    uniform: Option<u8>,
+    mixed: Vec<u8>,
+    len: usize,
+}
+
+impl DimsOf {
+    fn push(&mut self, n: u8) {
+        match self.uniform {
+            None if self.mixed.is_empty() => self.uniform = Some(n),
+            Some(u) if u != n => {
+                self.mixed = vec![u; self.len];
+                self.mixed.push(n);
+                self.uniform = None;
+            }
+            Some(_) => {}
+            None => self.mixed.push(n),
+        }
+        self.len += 1;
+    }
+
+    /// The element sizes and how many elements.
+    fn finish(self) -> (Dims, usize) {
+        let dims = match self.uniform {
+            Some(n) => Dims::Uniform(n),
+            None => Dims::Mixed(self.mixed),
+        };
+        (dims, self.len)
+    }
+}
+
 /// Reads `text` (the text of a `data_run` at `span`) into a packed run.
 pub fn read(text: &str, span: Span) -> Result<DataRun, BadNumber> {
     let mut values = Vec::with_capacity(text.len() / 6);
-    let mut dims: Vec<u8> = Vec::new();
-    let mut uniform: Option<u8> = None;
-    let mut mixed = false;
-    let mut len = 0;
+    let mut dims = DimsOf::default();
     scan(text, |p| {
         if let Piece::Element { values: v, .. } = p {
             values.extend_from_slice(v);
-            let n = v.len() as u8;
-            match uniform {
-                None if !mixed => uniform = Some(n),
-                Some(u) if u != n => {
-                    // The first element of another size: from now on one count each.
-                    dims = vec![u; len];
-                    mixed = true;
-                    uniform = None;
-                }
-                _ => {}
-            }
-            if mixed {
-                dims.push(n);
-            }
-            len += 1;
+            dims.push(v.len() as u8);
         }
     })?;
     values.shrink_to_fit();
+    let (dims, len) = dims.finish();
     Ok(DataRun {
         span,
         values,
-        dims: match uniform {
-            Some(n) if !mixed => Dims::Uniform(n),
-            _ => Dims::Mixed(dims),
-        },
+        dims,
         len,
         places: Vec::new(),
     })
 }
 
-/// Whether `text` (the inside of a `{ … }`) is nothing but two or more plain
-/// elements separated by commas, as the grammar's `data_run` reads them:
-/// numbers with an optional sign, and vectors of 2 to 5 such numbers with
-/// commas between (a trailing comma allowed, in a vector and after the last
-/// element; no comments). Such a body is read as one packed run.
-pub fn is_plain_body(text: &str) -> bool {
-    matches!(plain_body(text.as_bytes(), 0, &mut Vec::new()), Some((end, _)) if end == text.len())
-}
-
-/// The body that starts at `i` (after its `{`) when it is plain (see
-/// [`is_plain_body`]), read in the same pass that checks it: where it stops
+/// The body that starts at `i` (after its `{`) when it is plain (two or more
+/// plain numbers and vectors separated by commas, as the grammar's `data_run`
+/// reads them), read in the same pass that checks it: where it stops
 /// (its `}`, or the end of `b`) and its packed run, `None` when a number does
 /// not fit in an `f64` (left to [`read`] to report). `None` when the body is
 /// not plain; reading stops at the first byte that shows it.
@@ -298,31 +306,18 @@ pub fn plain_body(
     scratch.clear();
     let values = scratch;
     let mut places = Vec::with_capacity(16);
-    let mut dims: Vec<u8> = Vec::new();
-    let mut uniform: Option<u8> = None;
+    let mut dims = DimsOf::default();
     let mut fits = true;
-    let mut len = 0;
     i = skip_space(b, i);
     while i < b.len() && b[i] != b'}' {
         let before = values.len();
         let start = i;
         i = plain_element_into(b, i, values, &mut fits)?;
-        if len < PLACES_MAX {
+        if dims.len < PLACES_MAX {
             places.push(((start - base) as u32, (i - base) as u32));
         }
-        let n = (values.len() - before) as u8;
-        match uniform {
-            None if dims.is_empty() => uniform = Some(n),
-            Some(u) if u != n => {
-                // The first element of another size: from now on one count each.
-                dims = vec![u; len];
-                dims.push(n);
-                uniform = None;
-            }
-            Some(_) => {}
-            None => dims.push(n),
-        }
-        len += 1;
+        dims.push((values.len() - before) as u8);
+        let len = dims.len;
         i = skip_space(b, i);
         match b.get(i) {
             None | Some(b'}') => break,
@@ -335,6 +330,7 @@ pub fn plain_body(
             Some(_) => return None,
         }
     }
+    let (dims, len) = dims.finish();
     if len < 2 {
         return None;
     }
@@ -347,10 +343,7 @@ pub fn plain_body(
     let run = DataRun {
         span: Span::default(),
         values: values.as_slice().to_vec(),
-        dims: match uniform {
-            Some(n) => Dims::Uniform(n),
-            None => Dims::Mixed(dims),
-        },
+        dims,
         len,
         places,
     };
@@ -496,6 +489,15 @@ fn number(text: &str, mut i: usize) -> Result<(f64, usize), BadNumber> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Whether `text` (the inside of a `{ … }`) is nothing but two or more plain
+    /// elements separated by commas, as the grammar's `data_run` reads them:
+    /// numbers with an optional sign, and vectors of 2 to 5 such numbers with
+    /// commas between (a trailing comma allowed, in a vector and after the last
+    /// element; no comments). Such a body is read as one packed run.
+    fn is_plain_body(text: &str) -> bool {
+        matches!(plain_body(text.as_bytes(), 0, &mut Vec::new()), Some((end, _)) if end == text.len())
+    }
 
     fn run(text: &str) -> DataRun {
         read(text, Span::default()).expect("readable")
